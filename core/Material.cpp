@@ -1,0 +1,21 @@
+// Material; see Material.h.
+#include "core/Material.h"
+
+namespace relief::core {
+
+Material::Material() : m_parameters(defaultParameterValues()) {}
+
+void Material::setMap(MapSlot slot, std::shared_ptr<const Image> image, std::string sourcePath) {
+  if (image && image->colorSpace() != mapSlotColorSpace(slot)) {
+    auto retagged = std::make_shared<Image>(*image);
+    retagged->setColorSpace(mapSlotColorSpace(slot));
+    image = std::move(retagged);
+  }
+  m_maps[std::size_t(slot)] = MaterialMap{std::move(image), std::move(sourcePath)};
+}
+
+void Material::setParameter(ParamId id, double value) {
+  m_parameters[std::size_t(id)] = sanitizeParameterValue(parameterSpec(id), value);
+}
+
+}  // namespace relief::core

@@ -1,0 +1,30 @@
+// Built-in meshes: plane, cube and sphere with UVs and tangent frames (computeTangentFrames).
+// UVs follow OpenGL: v grows upward in the image, so a normal map's +Y points "up the texture".
+#pragma once
+
+#include "core/Mesh.h"
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace relief::core {
+
+enum class PrimitiveShape { Plane, Cube, Sphere };
+
+std::span<const PrimitiveShape> allPrimitiveShapes();
+std::string_view primitiveShapeName(PrimitiveShape shape);  // "plane", "cube", "sphere"
+std::optional<PrimitiveShape> findPrimitiveShape(std::string_view name);
+
+// A size x size square in the XZ plane facing +Y; u along +X, v along -Z (away from a viewer
+// on the +Z side), so that the texture reads upright when seen from the default camera.
+Mesh makePlane(float size = 2.0f, int segments = 1);
+// An axis-aligned cube centred on the origin; every face carries the full 0..1 UV square,
+// upright on the side faces.
+Mesh makeCube(float size = 1.6f);
+// A UV sphere: u is longitude (increasing to the right seen from outside), v latitude.
+Mesh makeSphere(float radius = 1.0f, int segments = 96, int rings = 48);
+
+Mesh makePrimitive(PrimitiveShape shape);
+
+}  // namespace relief::core

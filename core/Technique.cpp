@@ -1,0 +1,43 @@
+// Technique names; see Technique.h.
+#include "core/Technique.h"
+
+#include <array>
+
+namespace relief::core {
+namespace {
+
+struct TechniqueInfo {
+  Technique technique;
+  std::string_view name;
+  std::string_view label;
+};
+
+constexpr std::array kTechniques = {
+    TechniqueInfo{Technique::Normal, "normal", "Normal mapping"},
+};
+
+constexpr std::array kTechniqueList = {Technique::Normal};
+
+}  // namespace
+
+std::span<const Technique> allTechniques() {
+  return kTechniqueList;
+}
+
+std::string_view techniqueName(Technique technique) {
+  return kTechniques[std::size_t(technique)].name;
+}
+
+std::string_view techniqueLabel(Technique technique) {
+  return kTechniques[std::size_t(technique)].label;
+}
+
+std::optional<Technique> findTechnique(std::string_view name) {
+  for (const TechniqueInfo& info : kTechniques) {
+    if (info.name == name)
+      return info.technique;
+  }
+  return std::nullopt;
+}
+
+}  // namespace relief::core
