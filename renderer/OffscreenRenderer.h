@@ -1,0 +1,45 @@
+// OffscreenRenderer: renders a material into a core::Image of any size (up to the GPU's limit)
+// through MaterialRenderer, the same code the viewport uses. Owns its own context and
+// offscreen surface; needs a QGuiApplication on the xcb platform (an X server or Xvfb).
+#pragma once
+
+#include "core/Image.h"
+#include "core/Material.h"
+#include "core/Mesh.h"
+#include "core/Result.h"
+#include "renderer/RenderView.h"
+
+#include <memory>
+
+class QOpenGLContext;
+class QOffscreenSurface;
+
+namespace relief::renderer {
+
+class MaterialRenderer;
+
+class OffscreenRenderer {
+ public:
+  static core::Result<std::unique_ptr<OffscreenRenderer>> create();
+  ~OffscreenRenderer();
+
+  // Largest width or height this context can render, from GL_MAX_RENDERBUFFER_SIZE and
+  // GL_MAX_VIEWPORT_DIMS.
+  int maxSize() const { return m_maxSize; }
+
+  void setMesh(const core::Mesh& mesh);
+  void setMaterial(const core::Material& material);
+  // An sRGB RGBA image, rows top first, exactly what the viewport shows for the same view.
+  core::Result<core::Image> render(const RenderView& view, int width, int height);
+
+ private:
+  OffscreenRenderer();
+  bool makeCurrent();
+
+  std::unique_ptr<QOpenGLContext> m_context;
+  std::unique_ptr<QOffscreenSurface> m_surface;
+  std::unique_ptr<MaterialRenderer> m_renderer;
+  int m_maxSize = 0;
+};
+
+}  // namespace relief::renderer

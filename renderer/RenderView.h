@@ -1,0 +1,18 @@
+// RenderView: everything about a frame that is not the material: camera, light, background.
+#pragma once
+
+#include "core/DirectionalLight.h"
+#include "core/OrbitCamera.h"
+
+#include <glm/glm.hpp>
+
+namespace relief::renderer {
+
+struct RenderView {
+  core::OrbitCamera camera;
+  core::DirectionalLight light;
+  glm::vec3 backgroundTop{0.050f, 0.052f, 0.058f};     // linear RGB
+  glm::vec3 backgroundBottom{0.012f, 0.012f, 0.014f};  // linear RGB
+};
+
+}  // namespace relief::renderer

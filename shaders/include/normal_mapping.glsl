@@ -1,0 +1,15 @@
+// Reading tangent-space normals: decode from [0, 1], apply the Y convention and the strength,
+// renormalise (filtering shortens normals; DESIGN.md renormalises after every filter).
+
+vec3 decodeNormal(vec3 encoded) {
+  vec3 n = encoded * 2.0 - 1.0;
+  if (uNormalYDown) n.y = -n.y;
+  n.xy *= uNormalStrength;
+  // A texel with no tilt and z <= 0 (a black texel) would give a zero vector; keep it upright.
+  n.z = max(n.z, 1e-4);
+  return normalize(n);
+}
+
+vec3 sampleNormalMap(vec2 uv) {
+  return decodeNormal(texture(uNormalMap, uv).rgb);
+}

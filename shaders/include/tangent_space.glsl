@@ -1,0 +1,24 @@
+// Tangent frames per fragment: the interpolated normal and tangent are re-orthonormalised
+// (Gram-Schmidt) and the bitangent rebuilt as cross(N, T) * w, as reference 004 stores it.
+
+struct TangentFrame {
+  vec3 tangent;
+  vec3 bitangent;
+  vec3 normal;
+};
+
+TangentFrame buildTangentFrame(vec3 worldNormal, vec4 worldTangent, bool frontFacing) {
+  TangentFrame frame;
+  frame.normal = normalize(worldNormal);
+  frame.tangent = normalize(worldTangent.xyz - dot(worldTangent.xyz, frame.normal) * frame.normal);
+  frame.bitangent = cross(frame.normal, frame.tangent) * worldTangent.w;
+  // Seen from behind (an open mesh such as the plane), light the side that faces the viewer.
+  if (!frontFacing) frame.normal = -frame.normal;
+  return frame;
+}
+
+// Reference 004: Vt = (dot(T, V), dot(B, V), dot(N, V)); the order T, B, N matters.
+vec3 toTangentSpace(TangentFrame frame, vec3 worldVector) {
+  return vec3(dot(frame.tangent, worldVector), dot(frame.bitangent, worldVector),
+              dot(frame.normal, worldVector));
+}
