@@ -1,0 +1,62 @@
+// CliCommon; see CliCommon.h.
+#include "CliCommon.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace relief::cli {
+
+void printOut(const QString& text) {
+  std::fputs(text.toLocal8Bit().constData(), stdout);
+  std::fflush(stdout);
+}
+
+void printError(const QString& text) {
+  std::fprintf(stderr, "relief-cli: %s\n", text.toLocal8Bit().constData());
+}
+
+QStringList argumentsFrom(int argc, char* argv[]) {
+  QStringList arguments;
+  for (int i = 0; i < argc; ++i)
+    arguments << QString::fromLocal8Bit(argv[i]);
+  return arguments;
+}
+
+std::optional<int> parseOrExit(QCommandLineParser& parser, const QStringList& arguments,
+                               const QString& usage) {
+  const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                QStringLiteral("Show this help."));
+  parser.addOption(help);
+  // The command name is not a positional argument of the command.
+  QStringList withoutCommand = arguments;
+  if (withoutCommand.size() > 1)
+    withoutCommand.removeAt(1);
+  if (!parser.parse(withoutCommand)) {
+    printError(parser.errorText() + QStringLiteral(" (see --help)"));
+    return kExitUsage;
+  }
+  if (parser.isSet(help)) {
+    QString text = parser.helpText();
+    // QCommandLineParser's first line names the binary only; show the command's real usage.
+    const qsizetype firstNewline = text.indexOf(QLatin1Char('\n'));
+    text = QStringLiteral("Usage: ") + usage + text.mid(firstNewline);
+    printOut(text);
+    return kExitOk;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> numberOption(const QCommandLineParser& parser, const QString& name,
+                                   double fallback) {
+  if (!parser.isSet(name))
+    return fallback;
+  bool ok = false;
+  const double value = parser.value(name).toDouble(&ok);
+  if (!ok || !std::isfinite(value)) {
+    printError(QStringLiteral("--%1: '%2' is not a number").arg(name, parser.value(name)));
+    return std::nullopt;
+  }
+  return value;
+}
+
+}  // namespace relief::cli

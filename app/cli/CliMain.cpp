@@ -1,0 +1,40 @@
+// relief-cli: Relief's command-line twin. Dispatches to one command per verb.
+#include "CliCommon.h"
+#include "InfoCommand.h"
+#include "RenderCommand.h"
+
+#include <QCoreApplication>
+
+#include <cstring>
+
+namespace {
+
+const char* kUsage =
+    "Usage: relief-cli <command> [options]\n"
+    "\n"
+    "Commands:\n"
+    "  render   Render a preset or maps offscreen to an image (needs an X display)\n"
+    "  info     Print an image's size, channels, bit depth and colour space\n"
+    "\n"
+    "Run 'relief-cli <command> --help' for a command's options.\n";
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  using namespace relief::cli;
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0 ||
+      std::strcmp(argv[1], "help") == 0) {
+    printOut(QString::fromUtf8(kUsage));
+    return argc < 2 ? kExitUsage : kExitOk;
+  }
+  const QString command = QString::fromLocal8Bit(argv[1]);
+  if (command == QStringLiteral("render"))
+    return runRender(argc, argv);
+
+  QCoreApplication application(argc, argv);
+  if (command == QStringLiteral("info"))
+    return runInfo(QCoreApplication::arguments());
+  printError(QStringLiteral("unknown command '%1'").arg(command));
+  printOut(QString::fromUtf8(kUsage));
+  return kExitUsage;
+}

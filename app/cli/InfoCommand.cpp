@@ -1,0 +1,44 @@
+// InfoCommand; see InfoCommand.h.
+#include "InfoCommand.h"
+
+#include "CliCommon.h"
+#include "core/ImageIO.h"
+
+namespace relief::cli {
+
+int runInfo(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      QStringLiteral("Print an image's size, channels, bit depth and colour space, after "
+                     "checking that all of its pixel data decodes."));
+  parser.addPositionalArgument(QStringLiteral("image"), QStringLiteral("The image file."));
+  if (auto exit = parseOrExit(parser, arguments, QStringLiteral("relief-cli info <image>"))) {
+    return *exit;
+  }
+  if (parser.positionalArguments().size() != 1) {
+    printError(QStringLiteral("info takes exactly one image (see --help)"));
+    return kExitUsage;
+  }
+  const QString path = parser.positionalArguments().front();
+  core::Result<core::ImageFileInfo> info = core::readImageInfo(path.toStdString());
+  if (!info) {
+    printError(QString::fromStdString(info.error()));
+    return kExitFailure;
+  }
+  if (core::Status intact = core::verifyImageData(path.toStdString()); !intact) {
+    printError(QString::fromStdString(intact.error()));
+    return kExitFailure;
+  }
+  printOut(QStringLiteral("file: %1\nformat: %2\nsize: %3x%4\nchannels: %5\n"
+                          "bit depth: %6 (%7)\ncolour space: %8\n")
+               .arg(path, QString::fromStdString(info->formatName))
+               .arg(info->width)
+               .arg(info->height)
+               .arg(info->channels)
+               .arg(info->bitsPerChannel)
+               .arg(info->isFloat ? QStringLiteral("float") : QStringLiteral("integer"))
+               .arg(QString::fromUtf8(core::colorSpaceName(info->colorSpace).data())));
+  return kExitOk;
+}
+
+}  // namespace relief::cli

@@ -1,0 +1,14 @@
+// Small previews of core::Images for panels (QImage lives in the UI layer, not in core).
+#pragma once
+
+#include "core/Image.h"
+
+#include <QImage>
+
+namespace relief::ui {
+
+// Box-filtered preview that fits in size x size; grey images show as grey, values clamped to
+// [0, 1] and shown as stored (sRGB colour as sRGB, data maps as their raw values).
+QImage makeThumbnail(const core::Image& image, int size);
+
+}  // namespace relief::ui

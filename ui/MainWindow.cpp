@@ -1,0 +1,284 @@
+// MainWindow; see MainWindow.h.
+#include "ui/MainWindow.h"
+
+#include "core/ImageIO.h"
+#include "core/MaterialPreset.h"
+#include "core/MeshPrimitives.h"
+#include "ui/MapsPanel.h"
+#include "ui/MaterialDocument.h"
+#include "ui/ParameterPanel.h"
+#include "ui/ViewportWidget.h"
+
+#include <QActionGroup>
+#include <QApplication>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QUndoView>
+
+namespace relief::ui {
+namespace {
+
+QString qstr(std::string_view text) {
+  return QString::fromUtf8(text.data(), qsizetype(text.size()));
+}
+
+const QStringList& imageSuffixes() {
+  static const QStringList suffixes = {
+      QStringLiteral("png"), QStringLiteral("jpg"),  QStringLiteral("jpeg"), QStringLiteral("tga"),
+      QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("exr")};
+  return suffixes;
+}
+
+QString imageFilter() {
+  QStringList patterns;
+  for (const QString& suffix : imageSuffixes())
+    patterns << QStringLiteral("*.") + suffix;
+  return QObject::tr("Images (%1);;All files (*)").arg(patterns.join(QLatin1Char(' ')));
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      m_document(new MaterialDocument(this)),
+      m_viewport(new ViewportWidget(m_document)),
+      m_frameTime(new QLabel),
+      m_rendererLabel(new QLabel) {
+  setWindowTitle(tr("Relief"));
+  setAcceptDrops(true);
+  setCentralWidget(m_viewport);
+  setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+  createDocks();
+  createMenus();
+
+  m_frameTime->setToolTip(tr("CPU time of the last frame, including waiting for the GPU"));
+  m_frameTime->setMinimumWidth(110);
+  statusBar()->addPermanentWidget(m_rendererLabel);
+  statusBar()->addPermanentWidget(m_frameTime);
+  connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::showFrameTime);
+  connect(m_viewport, &ViewportWidget::rendererReady, this,
+          [this](const QString& description) { m_rendererLabel->setText(description); });
+  connect(m_viewport, &ViewportWidget::renderError, this, [this](const QString& message) {
+    QMessageBox::critical(this, tr("Relief: the viewport cannot render"), message);
+  });
+  connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+  connect(m_document, &MaterialDocument::materialReset, this, &MainWindow::updateTitle);
+  resize(1400, 860);
+}
+
+MainWindow::~MainWindow() {
+  // Children are deleted after this destructor has run; the document (deleted first) would
+  // otherwise notify slots of this half-destroyed window.
+  disconnect(m_document, nullptr, this, nullptr);
+  disconnect(m_document->undoStack(), nullptr, this, nullptr);
+  disconnect(m_viewport, nullptr, this, nullptr);
+}
+
+void MainWindow::createDocks() {
+  auto addDock = [this](const QString& title, const QString& name, QWidget* content,
+                        Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    dock->setWidget(scroll);
+    addDockWidget(area, dock);
+    return dock;
+  };
+  m_maps = new MapsPanel(m_document);
+  m_parameters = new ParameterPanel(m_document);
+  addDock(tr("Maps"), QStringLiteral("mapsDock"), m_maps, Qt::LeftDockWidgetArea);
+  QDockWidget* parametersDock = addDock(tr("Parameters"), QStringLiteral("parametersDock"),
+                                        m_parameters, Qt::RightDockWidgetArea);
+  auto* history = new QUndoView(m_document->undoStack());
+  history->setEmptyLabel(tr("<opened>"));
+  QDockWidget* historyDock =
+      addDock(tr("History"), QStringLiteral("historyDock"), history, Qt::RightDockWidgetArea);
+  tabifyDockWidget(parametersDock, historyDock);
+  parametersDock->raise();
+  resizeDocks({parametersDock}, {380}, Qt::Horizontal);
+  connect(m_maps, &MapsPanel::loadRequested, this,
+          [this](core::MapSlot slot) { chooseMapFile(slot); });
+}
+
+void MainWindow::createMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&Open Preset…"), QKeySequence::Open, this, &MainWindow::choosePreset);
+  file->addAction(tr("Open &Map…"), QKeySequence(tr("Ctrl+Shift+O")), this,
+                  [this] { chooseMapFile(std::nullopt); });
+  file->addSeparator();
+  file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
+  edit->addAction(undo);
+  edit->addAction(redo);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  view->addAction(tr("&Frame Mesh"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameMesh);
+  QMenu* meshes = view->addMenu(tr("&Mesh"));
+  auto* meshGroup = new QActionGroup(this);
+  int shortcut = 1;
+  for (core::PrimitiveShape shape : core::allPrimitiveShapes()) {
+    const QString name = qstr(core::primitiveShapeName(shape));
+    QAction* action = meshes->addAction(name.left(1).toUpper() + name.mid(1));
+    action->setCheckable(true);
+    action->setChecked(shape == core::PrimitiveShape::Plane);
+    action->setShortcut(QKeySequence(QStringLiteral("Ctrl+%1").arg(shortcut++)));
+    meshGroup->addAction(action);
+    connect(action, &QAction::triggered, this,
+            [this, shape] { m_viewport->setMesh(core::makePrimitive(shape)); });
+  }
+  view->addSeparator();
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
+    view->addAction(dock->toggleViewAction());
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("Viewport &Controls"), this, &MainWindow::showControlsHelp);
+  help->addAction(tr("&About Relief"), this, [this] {
+    QMessageBox::about(this, tr("About Relief"),
+                       tr("<b>Relief</b> %1<br>A material editor for height-map relief: "
+                          "normal mapping, parallax and self-shadowing.")
+                           .arg(QApplication::applicationVersion()));
+  });
+}
+
+void MainWindow::showControlsHelp() {
+  QMessageBox::information(this, tr("Viewport controls"), m_viewport->toolTip());
+}
+
+void MainWindow::showFrameTime(double milliseconds) {
+  m_frameTime->setText(tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
+}
+
+void MainWindow::updateTitle() {
+  const QString name = m_document->material().name().empty()
+                           ? tr("untitled")
+                           : QString::fromStdString(m_document->material().name());
+  const bool modified = !m_document->undoStack()->isClean();
+  setWindowTitle(
+      QStringLiteral("%1%2 — Relief").arg(name, modified ? QStringLiteral("*") : QString()));
+}
+
+bool MainWindow::isImageFile(const QString& path) {
+  return imageSuffixes().contains(QFileInfo(path).suffix().toLower());
+}
+
+bool MainWindow::isPresetFile(const QString& path) {
+  return QFileInfo(path).suffix().toLower() == QStringLiteral("relief");
+}
+
+bool MainWindow::openPreset(const QString& path) {
+  core::Result<core::LoadedPreset> loaded = core::loadPreset(path.toStdString());
+  if (!loaded) {
+    QMessageBox::warning(this, tr("Cannot open preset"), QString::fromStdString(loaded.error()));
+    return false;
+  }
+  m_document->reset(std::move(loaded->material), QFileInfo(path).absoluteFilePath());
+  m_lastFolder = QFileInfo(path).absolutePath();
+  if (!loaded->warnings.empty()) {
+    QStringList lines;
+    for (const std::string& warning : loaded->warnings)
+      lines << QString::fromStdString(warning);
+    statusBar()->showMessage(lines.join(QStringLiteral("; ")), 15000);
+  } else {
+    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
+  }
+  return true;
+}
+
+bool MainWindow::loadMapFile(const QString& path, std::optional<core::MapSlot> slot) {
+  if (!slot)
+    slot = core::guessMapSlotFromFileName(QFileInfo(path).fileName().toStdString());
+  if (!slot) {
+    QStringList labels;
+    for (core::MapSlot candidate : core::kAllMapSlots)
+      labels << qstr(core::mapSlotLabel(candidate));
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(
+        this, tr("Which map is this?"),
+        tr("%1 does not say which map it is.\nUse it as:").arg(QFileInfo(path).fileName()), labels,
+        0, false, &ok);
+    if (!ok)
+      return false;
+    slot = core::kAllMapSlots[std::size_t(labels.indexOf(chosen))];
+  }
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  core::Result<core::Image> image = core::loadImage(path.toStdString());
+  QApplication::restoreOverrideCursor();
+  if (!image) {
+    QMessageBox::warning(this, tr("Cannot load map"), QString::fromStdString(image.error()));
+    return false;
+  }
+  m_document->setMap(*slot, std::make_shared<core::Image>(std::move(image).value()),
+                     QFileInfo(path).absoluteFilePath());
+  m_lastFolder = QFileInfo(path).absolutePath();
+  statusBar()->showMessage(
+      tr("Loaded %1 as the %2 map")
+          .arg(QFileInfo(path).fileName(), qstr(core::mapSlotLabel(*slot)).toLower()),
+      5000);
+  return true;
+}
+
+void MainWindow::openFiles(const QStringList& paths) {
+  for (const QString& path : paths) {
+    if (isPresetFile(path)) {
+      openPreset(path);
+    } else {
+      loadMapFile(path);
+    }
+  }
+}
+
+void MainWindow::chooseMapFile(std::optional<core::MapSlot> slot) {
+  const QString title =
+      slot ? tr("Load %1 map").arg(qstr(core::mapSlotLabel(*slot)).toLower()) : tr("Open map");
+  const QString path = QFileDialog::getOpenFileName(this, title, m_lastFolder, imageFilter());
+  if (!path.isEmpty())
+    loadMapFile(path, slot);
+}
+
+void MainWindow::choosePreset() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"), m_lastFolder,
+                                                    tr("Relief presets (*.relief)"));
+  if (!path.isEmpty())
+    openPreset(path);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  for (const QUrl& url : event->mimeData()->urls()) {
+    const QString path = url.toLocalFile();
+    if (isImageFile(path) || isPresetFile(path)) {
+      event->acceptProposedAction();
+      return;
+    }
+  }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  QStringList paths;
+  for (const QUrl& url : event->mimeData()->urls()) {
+    const QString path = url.toLocalFile();
+    if (isImageFile(path) || isPresetFile(path))
+      paths << path;
+  }
+  event->acceptProposedAction();
+  openFiles(paths);
+}
+
+}  // namespace relief::ui

@@ -1,0 +1,72 @@
+// MaterialDocument; see MaterialDocument.h.
+#include "ui/MaterialDocument.h"
+
+#include "ui/MaterialCommands.h"
+
+namespace relief::ui {
+
+MaterialDocument::MaterialDocument(QObject* parent) : QObject(parent) {}
+
+void MaterialDocument::reset(core::Material material, const QString& filePath) {
+  m_material = std::move(material);
+  m_filePath = filePath;
+  m_undoStack.clear();
+  Q_EMIT materialReset();
+}
+
+void MaterialDocument::setParameter(core::ParamId id, double value, int interactiveEdit) {
+  const double sanitized = core::sanitizeParameterValue(core::parameterSpec(id), value);
+  if (sanitized == m_material.parameter(id))
+    return;
+  m_undoStack.push(
+      new SetParameterCommand(this, id, m_material.parameter(id), sanitized, interactiveEdit));
+}
+
+void MaterialDocument::resetParameters() {
+  if (m_material.parameters() == core::defaultParameterValues())
+    return;
+  m_undoStack.push(
+      new SetAllParametersCommand(this, m_material.parameters(), core::defaultParameterValues()));
+}
+
+void MaterialDocument::setTechnique(core::Technique technique) {
+  if (technique == m_material.technique())
+    return;
+  m_undoStack.push(new SetTechniqueCommand(this, m_material.technique(), technique));
+}
+
+void MaterialDocument::setMap(core::MapSlot slot, std::shared_ptr<const core::Image> image,
+                              const QString& sourcePath) {
+  core::Material probe;  // tags the image with the slot's colour space, as the material would
+  probe.setMap(slot, std::move(image), sourcePath.toStdString());
+  m_undoStack.push(new SetMapCommand(this, slot, m_material.map(slot), probe.map(slot)));
+}
+
+void MaterialDocument::clearMap(core::MapSlot slot) {
+  if (!m_material.hasMap(slot))
+    return;
+  m_undoStack.push(new SetMapCommand(this, slot, m_material.map(slot), core::MaterialMap{}));
+}
+
+void MaterialDocument::applyParameter(core::ParamId id, double value) {
+  m_material.setParameter(id, value);
+  Q_EMIT parameterChanged(id);
+}
+
+void MaterialDocument::applyParameters(const core::ParameterValues& values) {
+  for (const core::ParameterSpec& spec : core::allParameters()) {
+    applyParameter(spec.id, values[std::size_t(spec.id)]);
+  }
+}
+
+void MaterialDocument::applyTechnique(core::Technique technique) {
+  m_material.setTechnique(technique);
+  Q_EMIT techniqueChanged();
+}
+
+void MaterialDocument::applyMap(core::MapSlot slot, const core::MaterialMap& map) {
+  m_material.setMap(slot, map.image, map.sourcePath);
+  Q_EMIT mapChanged(slot);
+}
+
+}  // namespace relief::ui

@@ -1,0 +1,116 @@
+// ParameterPanel; see ParameterPanel.h.
+#include "ui/ParameterPanel.h"
+
+#include "ui/MaterialDocument.h"
+#include "ui/ParameterSlider.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace relief::ui {
+namespace {
+
+QString qstr(std::string_view text) {
+  return QString::fromUtf8(text.data(), qsizetype(text.size()));
+}
+
+}  // namespace
+
+ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document), m_technique(new QComboBox) {
+  auto* outer = new QVBoxLayout(this);
+  auto* form = new QFormLayout;
+  form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+  outer->addLayout(form);
+
+  for (core::Technique technique : core::allTechniques()) {
+    m_technique->addItem(qstr(core::techniqueLabel(technique)),
+                         qstr(core::techniqueName(technique)));
+  }
+  m_technique->setToolTip(tr("How the relief is rendered (the CLI's --technique)."));
+  form->addRow(tr("Technique"), m_technique);
+  connect(m_technique, &QComboBox::activated, this, [this](int index) {
+    m_document->setTechnique(core::allTechniques()[std::size_t(index)]);
+  });
+
+  for (const core::ParameterSpec& spec : core::allParameters()) {
+    QWidget* editor = createEditor(spec);
+    editor->setObjectName(qstr(spec.name));
+    editor->setToolTip(qstr(core::describeParameter(spec)));
+    m_editors[std::size_t(spec.id)] = editor;
+    auto* label = new QLabel(qstr(spec.label));
+    label->setToolTip(editor->toolTip());
+    form->addRow(label, editor);
+  }
+
+  auto* resetButton = new QPushButton(tr("Reset to defaults"));
+  resetButton->setToolTip(tr("Set every parameter back to its default (undoable)."));
+  connect(resetButton, &QPushButton::clicked, m_document, &MaterialDocument::resetParameters);
+  outer->addWidget(resetButton);
+  outer->addStretch(1);
+
+  connect(m_document, &MaterialDocument::parameterChanged, this, &ParameterPanel::showValue);
+  connect(m_document, &MaterialDocument::materialReset, this, &ParameterPanel::showAll);
+  connect(m_document, &MaterialDocument::techniqueChanged, this, &ParameterPanel::showAll);
+  showAll();
+}
+
+QWidget* ParameterPanel::createEditor(const core::ParameterSpec& spec) {
+  const core::ParamId id = spec.id;
+  switch (spec.kind) {
+    case core::ParamKind::Bool: {
+      auto* box = new QCheckBox;
+      connect(box, &QCheckBox::toggled, this,
+              [this, id](bool on) { m_document->setParameter(id, on ? 1.0 : 0.0); });
+      return box;
+    }
+    case core::ParamKind::Choice: {
+      auto* box = new QComboBox;
+      for (std::string_view choice : spec.choices)
+        box->addItem(qstr(choice));
+      connect(box, &QComboBox::activated, this,
+              [this, id](int index) { m_document->setParameter(id, double(index)); });
+      return box;
+    }
+    case core::ParamKind::Float:
+    case core::ParamKind::Int:
+      break;
+  }
+  auto* slider = new ParameterSlider(spec);
+  connect(slider, &ParameterSlider::dragStarted, this,
+          [this] { m_currentDrag = m_document->beginInteractiveEdit(); });
+  connect(slider, &ParameterSlider::valueEdited, this, [this, id](double value, bool dragging) {
+    m_document->setParameter(id, value, dragging ? m_currentDrag : 0);
+  });
+  return slider;
+}
+
+void ParameterPanel::showValue(core::ParamId id) {
+  const double value = m_document->material().parameter(id);
+  QWidget* editor = m_editors[std::size_t(id)];
+  if (auto* slider = qobject_cast<ParameterSlider*>(editor)) {
+    slider->setValue(value);
+  } else if (auto* check = qobject_cast<QCheckBox*>(editor)) {
+    const QSignalBlocker block(check);
+    check->setChecked(value != 0.0);
+  } else if (auto* combo = qobject_cast<QComboBox*>(editor)) {
+    const QSignalBlocker block(combo);
+    combo->setCurrentIndex(int(value));
+  }
+}
+
+void ParameterPanel::showAll() {
+  {
+    const QSignalBlocker block(m_technique);
+    m_technique->setCurrentIndex(int(m_document->material().technique()));
+  }
+  for (const core::ParameterSpec& spec : core::allParameters())
+    showValue(spec.id);
+}
+
+}  // namespace relief::ui
