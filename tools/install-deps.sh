@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package that Relief's build, tests and app need. Safe to run again:
+# it only calls apt when something is missing. Uses sudo when not run as root.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config clang-format
+  # Qt 6 (widgets, OpenGL, concurrency, charts, tests)
+  qt6-base-dev libqt6opengl6-dev libqt6openglwidgets6 qt6-qpa-plugins qt6-charts-dev
+  # domain libraries
+  libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev libassimp-dev
+  libsquish-dev libastcenc-dev android-libetc1-dev libfftw3-dev libxcb1-dev
+  # tests: GoogleTest, a headless X server with Mesa's software OpenGL, shader validation
+  libgtest-dev libgmock-dev xvfb xauth mesa-utils libgl1-mesa-dri glslang-tools
+  # screenshots and independent image readers used while testing
+  imagemagick python3-pil python3-numpy
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    sudo="sudo"
+  else
+    echo "install-deps: need root or sudo to install: ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+echo "install-deps: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"

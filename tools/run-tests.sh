@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The whole test suite, as CI runs it: formatting check, a strict build (warnings are errors)
+# with AddressSanitizer and UndefinedBehaviorSanitizer, then every CTest test under Xvfb with
+# Mesa's llvmpipe. Extra arguments go to ctest (e.g. -L unit, -R Lighting).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=build/test
+jobs=$(nproc)
+
+tools/check-format.sh
+
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DRELIEF_STRICT=ON -DRELIEF_SANITIZE=ON -DRELIEF_BUILD_TESTS=ON
+cmake --build "$build" -j "$jobs"
+
+# Qt wants a private runtime folder; tests get a fresh one per run.
+runtime=$(mktemp -d)
+chmod 700 "$runtime"
+trap 'rm -rf "$runtime"' EXIT
+export XDG_RUNTIME_DIR="$runtime"
+export QT_QPA_PLATFORM=xcb
+
+start=$(date +%s)
+xvfb-run -a -s '-screen 0 1600x1000x24' \
+  ctest --test-dir "$build" --output-on-failure -j "$jobs" "$@"
+echo "run-tests: all tests passed in $(( $(date +%s) - start )) s"
