@@ -1,0 +1,238 @@
+// relief-cli as a user runs it: on the samples, and on bad input (each must be a clear error
+// naming the file, a non-zero exit and no crash). `render` runs under the test's X display.
+#include "core/ImageIO.h"
+#include "support/ImageCompare.h"
+#include "support/TestPaths.h"
+
+#include <QFile>
+#include <QProcess>
+#include <QProcessEnvironment>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace relief::test {
+namespace {
+
+struct CliRun {
+  int exitCode = -1;
+  bool crashed = false;
+  std::string out;
+  std::string err;
+};
+
+CliRun runCli(const QStringList& arguments,
+              const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
+  QProcess process;
+  process.setProcessEnvironment(environment);
+  process.start(QStringLiteral(RELIEF_CLI_PATH), arguments);
+  CliRun run;
+  if (!process.waitForFinished(120000)) {
+    process.kill();
+    run.crashed = true;
+    return run;
+  }
+  run.crashed = process.exitStatus() != QProcess::NormalExit;
+  run.exitCode = process.exitCode();
+  run.out = process.readAllStandardOutput().toStdString();
+  run.err = process.readAllStandardError().toStdString();
+  return run;
+}
+
+QString q(const std::string& text) {
+  return QString::fromStdString(text);
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The bad files every command that reads an image must refuse cleanly.
+std::vector<std::pair<std::string, std::string>> badImageFiles() {
+  const std::string folder = scratchFolder();
+  const std::string valid = readBytes(sourcePath("samples/tiles/tiles_color.png"));
+  std::vector<std::pair<std::string, std::string>> files;
+  files.emplace_back(folder + "/missing.png", "not found");
+
+  writeBytes(folder + "/zero.png", "");
+  files.emplace_back(folder + "/zero.png", "empty");
+
+  writeBytes(folder + "/text.png", "just some text, not an image\n");
+  files.emplace_back(folder + "/text.png", "cannot read");
+
+  writeBytes(folder + "/truncated.png", valid.substr(0, valid.size() / 3));
+  files.emplace_back(folder + "/truncated.png", "truncated");
+
+  // Flip one byte inside the first IDAT chunk's data: its CRC no longer matches.
+  std::string badCrc = valid;
+  const std::size_t idat = badCrc.find("IDAT");
+  badCrc[idat + 40] = char(badCrc[idat + 40] ^ 0x5a);
+  writeBytes(folder + "/badcrc.png", badCrc);
+  files.emplace_back(folder + "/badcrc.png", "damaged");
+
+  // An IHDR that claims 100000x100000 (with a valid CRC).
+  std::string huge = valid.substr(0, 33);
+  const unsigned char dims[8] = {0, 1, 0x86, 0xa0, 0, 1, 0x86, 0xa0};
+  huge.replace(16, 8, reinterpret_cast<const char*>(dims), 8);
+  std::uint32_t crc = 0xffffffffu;
+  for (std::size_t i = 12; i < 29; ++i) {
+    crc ^= static_cast<unsigned char>(huge[i]);
+    for (int bit = 0; bit < 8; ++bit)
+      crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  crc = ~crc;
+  for (int i = 0; i < 4; ++i)
+    huge[std::size_t(29 + i)] = char(crc >> (24 - 8 * i));
+  huge += valid.substr(33);
+  writeBytes(folder + "/huge.png", huge);
+  files.emplace_back(folder + "/huge.png", "100000x100000");
+  return files;
+}
+
+void expectCleanFailure(const CliRun& run, const std::string& file, const std::string& problem) {
+  EXPECT_FALSE(run.crashed) << file;
+  EXPECT_NE(run.exitCode, 0) << file;
+  const std::string name = file.substr(file.find_last_of('/') + 1);
+  EXPECT_NE(run.err.find(name), std::string::npos) << "stderr: " << run.err;
+  EXPECT_NE(run.err.find(problem), std::string::npos) << "stderr: " << run.err;
+}
+
+TEST(Cli, InfoDescribesAnImage) {
+  CliRun run = runCli({QStringLiteral("info"), q(sourcePath("samples/bricks/bricks_height.png"))});
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("size: 1024x1024"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("channels: 1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("bit depth: 16"), std::string::npos) << run.out;
+}
+
+TEST(Cli, InfoRefusesBadFilesClearly) {
+  for (const auto& [file, problem] : badImageFiles()) {
+    expectCleanFailure(runCli({QStringLiteral("info"), q(file)}), file, problem);
+  }
+}
+
+TEST(Cli, RenderRefusesBadMapsClearly) {
+  const std::string out = scratchFolder() + "/never.png";
+  for (const auto& [file, problem] : badImageFiles()) {
+    CliRun run = runCli({QStringLiteral("render"), QStringLiteral("--color"), q(file),
+                         QStringLiteral("--out"), q(out)});
+    expectCleanFailure(run, file, problem);
+  }
+  EXPECT_FALSE(QFile::exists(q(out)));
+}
+
+TEST(Cli, RenderWritesThePresetsImage) {
+  const std::string out = scratchFolder() + "/bricks.png";
+  CliRun run = runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--out"),
+                       q(out), QStringLiteral("--size"), QStringLiteral("320x200")});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  core::Result<core::Image> image = core::loadImage(out);
+  ASSERT_TRUE(image.ok()) << image.error();
+  EXPECT_EQ(image->width(), 320);
+  EXPECT_EQ(image->height(), 200);
+  // The CLI draws the same picture as the renderer's golden image of this view.
+  EXPECT_TRUE(matchesBaseline(image.value(), "bricks_plane", 64.0 / 255.0, 0.5 / 255.0));
+}
+
+TEST(Cli, RenderTakesMapsAndParametersAndViewOptions) {
+  const std::string out = scratchFolder() + "/maps.png";
+  CliRun run = runCli({QStringLiteral("render"),
+                       QStringLiteral("--color"),
+                       q(sourcePath("samples/tiles/tiles_color.png")),
+                       QStringLiteral("--height"),
+                       q(sourcePath("samples/tiles/tiles_height.png")),
+                       QStringLiteral("--set"),
+                       QStringLiteral("tiling=3"),
+                       QStringLiteral("--set"),
+                       QStringLiteral("normalYDown=true"),
+                       QStringLiteral("--yaw"),
+                       QStringLiteral("-30"),
+                       QStringLiteral("--pitch"),
+                       QStringLiteral("60"),
+                       QStringLiteral("--light-yaw"),
+                       QStringLiteral("10"),
+                       QStringLiteral("--light-pitch"),
+                       QStringLiteral("70"),
+                       QStringLiteral("--mesh"),
+                       QStringLiteral("sphere"),
+                       QStringLiteral("--size"),
+                       QStringLiteral("64x48"),
+                       QStringLiteral("--out"),
+                       q(out)});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  core::Result<core::Image> image = core::loadImage(out);
+  ASSERT_TRUE(image.ok());
+  EXPECT_EQ(image->width(), 64);
+}
+
+TEST(Cli, RenderRejectsBadOptionsWithUsageErrors) {
+  const std::string out = scratchFolder() + "/x.png";
+  const QString preset = q(samplePreset("bricks"));
+  const std::vector<std::pair<QStringList, std::string>> cases = {
+      {{QStringLiteral("render"), preset}, "--out"},
+      {{QStringLiteral("render"), preset, QStringLiteral("--out"), q(out), QStringLiteral("--set"),
+        QStringLiteral("nonsense=1")},
+       "nonsense"},
+      {{QStringLiteral("render"), preset, QStringLiteral("--out"), q(out), QStringLiteral("--set"),
+        QStringLiteral("tiling=999")},
+       "tiling"},
+      {{QStringLiteral("render"), preset, QStringLiteral("--out"), q(out), QStringLiteral("--size"),
+        QStringLiteral("big")},
+       "--size"},
+      {{QStringLiteral("render"), preset, QStringLiteral("--out"), q(out), QStringLiteral("--yaw"),
+        QStringLiteral("left")},
+       "--yaw"},
+      {{QStringLiteral("render"), preset, QStringLiteral("--out"), q(out), QStringLiteral("--mesh"),
+        QStringLiteral("teapot")},
+       "teapot"},
+      {{QStringLiteral("render"), preset, QStringLiteral("--frobnicate")}, "frobnicate"},
+      {{QStringLiteral("render"), q(scratchFolder() + "/nope.relief"), QStringLiteral("--out"),
+        q(out)},
+       "nope.relief"},
+      {{QStringLiteral("explode")}, "explode"},
+  };
+  for (const auto& [arguments, mention] : cases) {
+    CliRun run = runCli(arguments);
+    EXPECT_FALSE(run.crashed);
+    EXPECT_NE(run.exitCode, 0) << arguments.join(QLatin1Char(' ')).toStdString();
+    EXPECT_NE(run.err.find(mention), std::string::npos)
+        << arguments.join(QLatin1Char(' ')).toStdString() << "\nstderr: " << run.err;
+  }
+}
+
+TEST(Cli, RenderWithoutADisplaySaysSo) {
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.remove(QStringLiteral("DISPLAY"));
+  environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+  const std::string out = scratchFolder() + "/nodisplay.png";
+  CliRun run =
+      runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--out"), q(out)},
+             environment);
+  EXPECT_FALSE(run.crashed);
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.err.find("xvfb-run"), std::string::npos) << run.err;
+}
+
+TEST(Cli, EveryCommandHasHelp) {
+  for (const QString& command : {QStringLiteral("render"), QStringLiteral("info")}) {
+    CliRun run = runCli({command, QStringLiteral("--help")});
+    EXPECT_EQ(run.exitCode, 0) << command.toStdString();
+    EXPECT_NE(run.out.find("Usage: relief-cli " + command.toStdString()), std::string::npos)
+        << run.out;
+  }
+  CliRun top = runCli({QStringLiteral("--help")});
+  EXPECT_EQ(top.exitCode, 0);
+  EXPECT_NE(top.out.find("render"), std::string::npos);
+  // The parameter list in render --help comes from core's table.
+  CliRun render = runCli({QStringLiteral("render"), QStringLiteral("--help")});
+  EXPECT_NE(render.out.find("normalYDown"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace relief::test

@@ -1,0 +1,236 @@
+// Image files: exact round trips for the lossless precisions, bounded reads of hostile files.
+#include "core/ImageIO.h"
+#include "support/TestPaths.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <vector>
+
+namespace relief::core {
+namespace {
+
+using test::scratchFolder;
+
+// A deterministic image whose values are exactly representable at `levels` steps.
+Image quantizedPattern(int width, int height, int channels, int levels) {
+  Image image(width, height, channels);
+  std::uint32_t state = 12345u;
+  for (std::size_t i = 0; i < image.valueCount(); ++i) {
+    state = state * 1664525u + 1013904223u;
+    image.data()[i] = float((state >> 8) % std::uint32_t(levels + 1)) / float(levels);
+  }
+  return image;
+}
+
+// Every stored integer level comes back (float k/levels may differ from OpenImageIO's
+// conversion in the last bit, so levels are compared, not floats), and a second save of the
+// loaded image reproduces the first load bit for bit.
+void expectLevelsRoundTrip(const Image& original, const std::string& path, SampleFormat format,
+                           int levels) {
+  ASSERT_TRUE(saveImage(original, path, format).ok()) << path;
+  Result<Image> loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  ASSERT_EQ(loaded->valueCount(), original.valueCount()) << path;
+  for (std::size_t i = 0; i < original.valueCount(); ++i) {
+    ASSERT_EQ(std::lround(loaded->data()[i] * float(levels)),
+              std::lround(original.data()[i] * float(levels)))
+        << path << " value " << i;
+  }
+  ASSERT_TRUE(saveImage(loaded.value(), path, format).ok()) << path;
+  Result<Image> reloaded = loadImage(path);
+  ASSERT_TRUE(reloaded.ok()) << reloaded.error();
+  EXPECT_EQ(reloaded.value(), loaded.value()) << path;
+}
+
+TEST(ImageIO, SixteenBitPngRoundTripsExactly) {
+  const Image original = quantizedPattern(37, 19, 3, 65535);
+  const std::string path = scratchFolder() + "/round16.png";
+  expectLevelsRoundTrip(original, path, SampleFormat::UInt16, 65535);
+  Result<Image> loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok());
+  EXPECT_EQ(loaded->sourceBitsPerChannel(), 16);
+  // Auto keeps a 16-bit source 16-bit.
+  ASSERT_TRUE(saveImage(loaded.value(), path).ok());
+  EXPECT_EQ(readImageInfo(path)->bitsPerChannel, 16);
+}
+
+TEST(ImageIO, SixteenBitTiffRoundTripsExactly) {
+  expectLevelsRoundTrip(quantizedPattern(17, 23, 4, 65535), scratchFolder() + "/round16.tif",
+                        SampleFormat::UInt16, 65535);
+}
+
+TEST(ImageIO, FloatExrRoundTripsExactly) {
+  Image original(16, 9, 4);
+  for (std::size_t i = 0; i < original.valueCount(); ++i) {
+    // Values outside [0, 1], negative, tiny and with full mantissas.
+    original.data()[i] = std::sin(float(i) * 1.37f) * 1000.0f + 1e-7f * float(i);
+  }
+  const std::string path = scratchFolder() + "/roundfloat.exr";
+  ASSERT_TRUE(saveImage(original, path, SampleFormat::Float).ok());
+  Result<Image> loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_EQ(loaded->colorSpace(), ColorSpace::Linear);
+  for (std::size_t i = 0; i < original.valueCount(); ++i) {
+    ASSERT_EQ(loaded->data()[i], original.data()[i]) << "value " << i;
+  }
+}
+
+TEST(ImageIO, HalfExrKeepsHalfPrecisionValues) {
+  // Multiples of 1/1024 in [0, 2) are exact in half precision (10-bit mantissa).
+  const Image original = quantizedPattern(8, 8, 1, 1024);
+  const std::string path = scratchFolder() + "/roundhalf.exr";
+  ASSERT_TRUE(saveImage(original, path, SampleFormat::Half).ok());
+  Result<Image> loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_EQ(loaded.value(), original);
+}
+
+TEST(ImageIO, EightBitFormatsKeepEightBitValues) {
+  const Image original = quantizedPattern(21, 13, 3, 255);
+  for (const char* extension : {".png", ".tga", ".tif"}) {
+    expectLevelsRoundTrip(original, scratchFolder() + "/round8" + extension, SampleFormat::UInt8,
+                          255);
+  }
+}
+
+TEST(ImageIO, JpegIsCloseOnSmoothContent) {
+  // JPEG is lossy; on a smooth gradient it should stay within a few levels.
+  Image original(64, 64, 3, ColorSpace::Srgb);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      original.at(x, y, 0) = float(x) / 63.0f;
+      original.at(x, y, 1) = float(y) / 63.0f;
+      original.at(x, y, 2) = 0.5f;
+    }
+  }
+  const std::string path = scratchFolder() + "/smooth.jpg";
+  ASSERT_TRUE(saveImage(original, path).ok());
+  Result<Image> loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_EQ(loaded->colorSpace(), ColorSpace::Srgb);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < original.valueCount(); ++i) {
+    worst = std::max(worst, double(std::abs(loaded->data()[i] - original.data()[i])));
+  }
+  EXPECT_LT(worst, 8.0 / 255.0);
+}
+
+TEST(ImageIO, InfoReportsWhatTheHeaderSays) {
+  const std::string path = scratchFolder() + "/info16.png";
+  ASSERT_TRUE(saveImage(quantizedPattern(30, 20, 1, 65535), path, SampleFormat::UInt16).ok());
+  Result<ImageFileInfo> info = readImageInfo(path);
+  ASSERT_TRUE(info.ok()) << info.error();
+  EXPECT_EQ(info->width, 30);
+  EXPECT_EQ(info->height, 20);
+  EXPECT_EQ(info->channels, 1);
+  EXPECT_EQ(info->bitsPerChannel, 16);
+  EXPECT_FALSE(info->isFloat);
+  EXPECT_EQ(info->formatName, "png");
+}
+
+// A PNG signature and an IHDR chunk claiming the given size, with a correct CRC, followed by
+// an empty IDAT and IEND: a header that lies about an enormous image.
+std::vector<unsigned char> pngHeaderClaiming(std::uint32_t width, std::uint32_t height) {
+  std::vector<unsigned char> bytes = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  auto crc32 = [](const unsigned char* data, std::size_t size) {
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 0; i < size; ++i) {
+      crc ^= data[i];
+      for (int bit = 0; bit < 8; ++bit)
+        crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+  };
+  auto put32 = [](std::vector<unsigned char>& out, std::uint32_t value) {
+    for (int shift = 24; shift >= 0; shift -= 8)
+      out.push_back((unsigned char)(value >> shift));
+  };
+  auto chunk = [&](const char* type, const std::vector<unsigned char>& data) {
+    put32(bytes, std::uint32_t(data.size()));
+    std::vector<unsigned char> typed(type, type + 4);
+    typed.insert(typed.end(), data.begin(), data.end());
+    bytes.insert(bytes.end(), typed.begin(), typed.end());
+    put32(bytes, crc32(typed.data(), typed.size()));
+  };
+  std::vector<unsigned char> ihdr;
+  put32(ihdr, width);
+  put32(ihdr, height);
+  ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0});  // 8-bit RGB, deflate, no filter, no interlace
+  chunk("IHDR", ihdr);
+  chunk("IDAT", {0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01});
+  chunk("IEND", {});
+  return bytes;
+}
+
+void writeBytes(const std::string& path, const std::vector<unsigned char>& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+TEST(ImageIO, RefusesEnormousHeaderBeforeAllocating) {
+  const std::string path = scratchFolder() + "/huge.png";
+  writeBytes(path, pngHeaderClaiming(100000, 100000));
+  // 100000^2 RGB floats would be 120 GB; the refusal must come from the header check.
+  Result<Image> loaded = loadImage(path);
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_NE(loaded.error().find("huge.png"), std::string::npos) << loaded.error();
+  EXPECT_NE(loaded.error().find("100000x100000"), std::string::npos) << loaded.error();
+  EXPECT_FALSE(readImageInfo(path).ok());
+}
+
+TEST(ImageIO, ClearErrorsForMissingEmptyAndNonImageFiles) {
+  Result<Image> missing = loadImage(scratchFolder() + "/does-not-exist.png");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().find("does-not-exist.png: file not found"), std::string::npos);
+
+  const std::string empty = scratchFolder() + "/empty.png";
+  writeBytes(empty, {});
+  Result<Image> emptyResult = loadImage(empty);
+  ASSERT_FALSE(emptyResult.ok());
+  EXPECT_NE(emptyResult.error().find("empty.png: the file is empty"), std::string::npos);
+
+  const std::string text = scratchFolder() + "/notes.png";
+  writeBytes(text, {'h', 'e', 'l', 'l', 'o', '\n'});
+  Result<Image> textResult = loadImage(text);
+  ASSERT_FALSE(textResult.ok());
+  EXPECT_NE(textResult.error().find("notes.png"), std::string::npos) << textResult.error();
+}
+
+TEST(ImageIO, TruncatedFilesAreDetectedByLoadAndVerify) {
+  const std::string whole = scratchFolder() + "/whole.png";
+  ASSERT_TRUE(saveImage(quantizedPattern(256, 256, 3, 255), whole, SampleFormat::UInt8).ok());
+  EXPECT_TRUE(verifyImageData(whole).ok());
+  std::ifstream in(whole, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  const std::string cut = scratchFolder() + "/cut.png";
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  EXPECT_TRUE(readImageInfo(cut).ok());  // the header is intact
+  Status verified = verifyImageData(cut);
+  ASSERT_FALSE(verified.ok());
+  EXPECT_NE(verified.error().find("cut.png"), std::string::npos);
+  EXPECT_FALSE(loadImage(cut).ok());
+}
+
+TEST(ImageIO, FailedSaveLeavesNoFileAndNamesThePath) {
+  const std::string path = scratchFolder() + "/no/such/folder/out.png";
+  Status saved = saveImage(quantizedPattern(4, 4, 3, 255), path);
+  ASSERT_FALSE(saved.ok());
+  EXPECT_NE(saved.error().find("out.png"), std::string::npos);
+}
+
+TEST(ImageIO, SaveReplacesAnExistingFile) {
+  const std::string path = scratchFolder() + "/replace.png";
+  ASSERT_TRUE(saveImage(quantizedPattern(4, 4, 3, 255), path, SampleFormat::UInt8).ok());
+  const Image second = quantizedPattern(8, 2, 1, 255);
+  ASSERT_TRUE(saveImage(second, path, SampleFormat::UInt8).ok());
+  Result<Image> loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok());
+  EXPECT_EQ(loaded->width(), 8);
+  EXPECT_EQ(loaded->channels(), 1);
+}
+
+}  // namespace
+}  // namespace relief::core

@@ -1,0 +1,40 @@
+// Assigning dropped files to map slots by the hints in their names.
+#include "core/MapSlot.h"
+
+#include <gtest/gtest.h>
+
+namespace relief::core {
+namespace {
+
+TEST(MapSlot, GuessesFromCommonNamingSchemes) {
+  EXPECT_EQ(guessMapSlotFromFileName("bricks_height.png"), MapSlot::Height);
+  EXPECT_EQ(guessMapSlotFromFileName("/some/dir/bricks_normal.png"), MapSlot::Normal);
+  EXPECT_EQ(guessMapSlotFromFileName("Bricks_Color.PNG"), MapSlot::Color);
+  EXPECT_EQ(guessMapSlotFromFileName("rock_albedo.jpg"), MapSlot::Color);
+  EXPECT_EQ(guessMapSlotFromFileName("wood-diffuse.tga"), MapSlot::Color);
+  EXPECT_EQ(guessMapSlotFromFileName("T_Wall_BaseColor.tga"), MapSlot::Color);
+  EXPECT_EQ(guessMapSlotFromFileName("rock_nor_gl_4k.exr"), MapSlot::Normal);
+  EXPECT_EQ(guessMapSlotFromFileName("ground_disp.exr"), MapSlot::Height);
+  EXPECT_EQ(guessMapSlotFromFileName("ground_AO.png"), MapSlot::AmbientOcclusion);
+  EXPECT_EQ(guessMapSlotFromFileName("ground_roughness.png"), MapSlot::Roughness);
+  // The last hint wins: a height map made from a normal map.
+  EXPECT_EQ(guessMapSlotFromFileName("wall_normal_height.png"), MapSlot::Height);
+}
+
+TEST(MapSlot, DoesNotGuessFromPartsOfWords) {
+  EXPECT_EQ(guessMapSlotFromFileName("minor.png"), std::nullopt);  // contains "nor"
+  EXPECT_EQ(guessMapSlotFromFileName("photo.png"), std::nullopt);
+  EXPECT_EQ(guessMapSlotFromFileName("aorta.png"), std::nullopt);  // starts with "ao"
+  EXPECT_EQ(guessMapSlotFromFileName("normalized.png"), std::nullopt);
+}
+
+TEST(MapSlot, ColourIsSrgbAndDataIsLinear) {
+  EXPECT_EQ(mapSlotColorSpace(MapSlot::Color), ColorSpace::Srgb);
+  for (MapSlot slot :
+       {MapSlot::Normal, MapSlot::Height, MapSlot::AmbientOcclusion, MapSlot::Roughness}) {
+    EXPECT_EQ(mapSlotColorSpace(slot), ColorSpace::Linear);
+  }
+}
+
+}  // namespace
+}  // namespace relief::core

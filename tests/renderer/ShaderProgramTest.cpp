@@ -1,0 +1,55 @@
+// ShaderProgram against a real driver: a compile error is reported as the original file and
+// line (through the #include resolver), and a failed rebuild keeps the last good program.
+#include "renderer/OpenGLProbe.h"
+#include "renderer/ShaderProgram.h"
+#include "support/OffscreenFixture.h"
+
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+
+#include <map>
+
+namespace relief::test {
+namespace {
+
+class ShaderProgramWithDriver : public OffscreenTest {};
+
+TEST_F(ShaderProgramWithDriver, ErrorsPointAtTheIncludedFileAndLine) {
+  // The fixture's renderer proves a context can be made; this test needs its own current one.
+  QOpenGLContext context;
+  context.setFormat(renderer::requiredSurfaceFormat());
+  ASSERT_TRUE(context.create());
+  QOffscreenSurface surface;
+  surface.setFormat(context.format());
+  surface.create();
+  ASSERT_TRUE(context.makeCurrent(&surface));
+
+  std::map<std::string, std::string> files = {
+      {"ok.vert", "void main() { gl_Position = vec4(0.0); }\n"},
+      {"ok.frag", "#include \"parts/colour.glsl\"\nout vec4 c;\nvoid main() { c = colour(); }\n"},
+      {"parts/colour.glsl", "vec4 colour() { return vec4(1.0); }\n"},
+      {"bad.frag", "#include \"parts/broken.glsl\"\nout vec4 c;\nvoid main() { c = broken(); }\n"},
+      {"parts/broken.glsl", "// a helper\n\nvec4 broken() { return undefinedThing; }\n"},
+  };
+  const renderer::ShaderSourceLoader loader = [&files](const std::string& path) {
+    const auto it = files.find(path);
+    return it == files.end() ? std::nullopt : std::optional<std::string>(it->second);
+  };
+
+  renderer::ShaderProgram program;
+  ASSERT_TRUE(program.build("ok.vert", "ok.frag", {}, loader).ok());
+  ASSERT_TRUE(program.isValid());
+  QOpenGLShaderProgram* good = &program.program();
+
+  core::Status status = program.build("ok.vert", "bad.frag", {}, loader);
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().find("parts/broken.glsl:3"), std::string::npos) << status.error();
+  // The previous program is still the one in use.
+  EXPECT_TRUE(program.isValid());
+  EXPECT_EQ(&program.program(), good);
+  program.release();
+  context.doneCurrent();
+}
+
+}  // namespace
+}  // namespace relief::test

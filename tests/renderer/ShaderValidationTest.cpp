@@ -1,0 +1,57 @@
+// Every shader program, expanded exactly as the renderer expands it (from the embedded
+// resources), is accepted by glslangValidator, the Khronos reference compiler. This catches
+// what llvmpipe tolerates but a stricter driver would reject.
+#include "renderer/ShaderProgram.h"
+#include "support/TestPaths.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <array>
+#include <cstdio>
+#include <fstream>
+
+namespace relief::renderer {
+namespace {
+
+struct Stage {
+  const char* path;
+  const char* extension;  // glslangValidator picks the stage from it
+};
+
+std::string runValidator(const std::string& file, int& exitCode) {
+  const std::string command = "glslangValidator '" + file + "' 2>&1";
+  std::string output;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) {
+    exitCode = -1;
+    return "cannot run glslangValidator";
+  }
+  std::array<char, 512> buffer{};
+  while (fgets(buffer.data(), int(buffer.size()), pipe))
+    output += buffer.data();
+  const int status = pclose(pipe);
+  exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return output;
+}
+
+TEST(ShaderValidation, EveryStageCompilesWithGlslang) {
+  const Stage stages[] = {{"material.vert", ".vert"},
+                          {"material.frag", ".frag"},
+                          {"background.vert", ".vert"},
+                          {"background.frag", ".frag"}};
+  for (const Stage& stage : stages) {
+    core::Result<ResolvedShader> resolved =
+        resolveShaderIncludes(stage.path, loadShaderSource, shaderPrelude({}));
+    ASSERT_TRUE(resolved.ok()) << resolved.error();
+    const std::string file = test::scratchFolder() + "/expanded_" + stage.path + stage.extension;
+    std::ofstream(file) << resolved->source;
+    int exitCode = 0;
+    const std::string log = runValidator(file, exitCode);
+    ASSERT_NE(exitCode, 127) << "glslangValidator is not installed (tools/install-deps.sh)";
+    EXPECT_EQ(exitCode, 0) << stage.path << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+  }
+}
+
+}  // namespace
+}  // namespace relief::renderer

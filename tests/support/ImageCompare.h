@@ -1,0 +1,27 @@
+// Image comparison for render tests: max and mean absolute error per channel value, and a
+// baseline check that writes the actual and a difference image when it fails.
+#pragma once
+
+#include "core/Image.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace relief::test {
+
+struct ImageDifference {
+  double maxError = 0.0;   // largest |a - b| over all channel values, 0..1
+  double meanError = 0.0;  // mean |a - b| over all channel values
+  bool sameShape = true;
+};
+
+ImageDifference compareImages(const core::Image& a, const core::Image& b);
+
+// Compares with tests/baselines/<name>.png. Set RELIEF_UPDATE_BASELINES=1 to (re)write the
+// baseline instead. On failure writes <name>-actual.png and <name>-diff.png (difference x8)
+// into failureOutputFolder().
+::testing::AssertionResult matchesBaseline(const core::Image& actual, const std::string& name,
+                                           double maxTolerance, double meanTolerance);
+
+}  // namespace relief::test

@@ -1,0 +1,169 @@
+// The real main window under Xvfb: it opens on a sample, the viewport shows a lit frame, the
+// parameter sliders change it live, undo brings it back, and the viewport shows exactly what
+// the offscreen renderer (and so relief-cli render) produces for the same view.
+#include "core/ColorSpace.h"
+#include "core/MaterialPreset.h"
+#include "renderer/OffscreenRenderer.h"
+#include "support/ImageCompare.h"
+#include "support/TestPaths.h"
+#include "ui/MainWindow.h"
+#include "ui/MaterialDocument.h"
+#include "ui/ParameterPanel.h"
+#include "ui/ParameterSlider.h"
+#include "ui/ViewportWidget.h"
+
+#include <QCheckBox>
+#include <QSlider>
+#include <QStyle>
+#include <QStyleOptionSlider>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+namespace relief::test {
+namespace {
+
+core::Image toImage(const QImage& grabbed) {
+  const QImage rgba = grabbed.convertToFormat(QImage::Format_RGBA8888);
+  core::Image image(rgba.width(), rgba.height(), 4, core::ColorSpace::Srgb);
+  for (int y = 0; y < rgba.height(); ++y) {
+    const uchar* line = rgba.constScanLine(y);
+    for (int x = 0; x < rgba.width() * 4; ++x)
+      image.pixel(0, y)[x] = float(line[x]) / 255.0f;
+  }
+  return image;
+}
+
+// The frame changed visibly: on average over the whole frame (background included, which no
+// parameter touches) and strongly somewhere.
+void expectVisibleChange(const core::Image& before, const core::Image& after) {
+  const ImageDifference change = compareImages(before, after);
+  EXPECT_GT(change.meanError, 0.3 / 255.0);
+  EXPECT_GT(change.maxError, 16.0 / 255.0);
+}
+
+class MainWindowTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    m_window = std::make_unique<ui::MainWindow>();
+    m_window->resize(1000, 700);
+    m_window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("bricks"))));
+  }
+
+  core::Image grab() { return toImage(m_window->viewport()->grabFramebuffer()); }
+
+  std::unique_ptr<ui::MainWindow> m_window;
+};
+
+TEST_F(MainWindowTest, ShowsALitNormalMappedSample) {
+  const core::Image frame = grab();
+  ASSERT_GT(frame.width(), 100);
+  // Not empty: the centre (the material) is brighter than a background corner and coloured
+  // like brick (more red than blue).
+  const float* centre = frame.pixel(frame.width() / 2, frame.height() / 2);
+  const float* corner = frame.pixel(2, 2);
+  EXPECT_GT(centre[0], corner[0] + 0.1f);
+  EXPECT_GT(centre[0], centre[2] + 0.05f);
+  EXPECT_TRUE(m_window->windowTitle().startsWith(QStringLiteral("bricks")))
+      << m_window->windowTitle().toStdString();
+}
+
+TEST_F(MainWindowTest, MovingASliderChangesTheFrameAndUndoRestoresIt) {
+  const core::Image before = grab();
+  auto* tiling =
+      qobject_cast<ui::ParameterSlider*>(m_window->parameterPanel()->editor(core::ParamId::Tiling));
+  ASSERT_NE(tiling, nullptr);
+
+  // Drag the slider handle as a user would: press on the handle, move in steps, release.
+  QSlider* slider = tiling->slider();
+  QStyleOptionSlider option;
+  option.initFrom(slider);
+  option.orientation = slider->orientation();
+  option.minimum = slider->minimum();
+  option.maximum = slider->maximum();
+  option.sliderPosition = slider->sliderPosition();
+  option.sliderValue = slider->value();
+  const QPoint handle =
+      slider->style()
+          ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
+          .center();
+  QTest::mousePress(slider, Qt::LeftButton, {}, handle);
+  for (int step = 1; step <= 5; ++step) {
+    QTest::mouseMove(slider, handle + QPoint(step * slider->width() / 12, 0));
+  }
+  QTest::mouseRelease(slider, Qt::LeftButton, {}, handle + QPoint(5 * slider->width() / 12, 0));
+  const double dragged = m_window->document()->material().parameter(core::ParamId::Tiling);
+  EXPECT_GT(dragged, 2.5);
+
+  expectVisibleChange(before, grab());
+
+  // The whole drag is one undo step.
+  QUndoStack* undo = m_window->document()->undoStack();
+  EXPECT_EQ(undo->count(), 1);
+  undo->undo();
+  EXPECT_EQ(m_window->document()->material().parameter(core::ParamId::Tiling), 2.0);
+  EXPECT_EQ(tiling->value(), 2.0);
+  EXPECT_EQ(compareImages(before, grab()).maxError, 0.0);
+  undo->redo();
+  EXPECT_EQ(m_window->document()->material().parameter(core::ParamId::Tiling), dragged);
+}
+
+TEST_F(MainWindowTest, CheckBoxParameterChangesTheFrame) {
+  const core::Image before = grab();
+  auto* yDown =
+      qobject_cast<QCheckBox*>(m_window->parameterPanel()->editor(core::ParamId::NormalYDown));
+  ASSERT_NE(yDown, nullptr);
+  QTest::mouseClick(yDown, Qt::LeftButton);
+  EXPECT_EQ(m_window->document()->material().parameter(core::ParamId::NormalYDown), 1.0);
+  expectVisibleChange(before, grab());
+}
+
+TEST_F(MainWindowTest, ViewportMatchesTheOffscreenRenderOfTheSameView) {
+  // relief-cli render uses the offscreen renderer: the viewport must show the same pixels.
+  const core::Image viewportFrame = grab();
+  auto offscreen = renderer::OffscreenRenderer::create();
+  ASSERT_TRUE(offscreen.ok()) << offscreen.error();
+  offscreen.value()->setMesh(m_window->viewport()->mesh());
+  offscreen.value()->setMaterial(m_window->document()->material());
+  core::Result<core::Image> rendered = offscreen.value()->render(
+      m_window->viewport()->view(), viewportFrame.width(), viewportFrame.height());
+  ASSERT_TRUE(rendered.ok()) << rendered.error();
+  const ImageDifference difference = compareImages(viewportFrame, rendered.value());
+  EXPECT_TRUE(difference.sameShape);
+  EXPECT_LE(difference.maxError, 1.0 / 255.0);
+}
+
+TEST_F(MainWindowTest, DroppedFilesGoToTheSlotTheirNamesHint) {
+  const QString normal = QString::fromStdString(sourcePath("samples/tiles/tiles_normal.png"));
+  const QString height = QString::fromStdString(sourcePath("samples/tiles/tiles_height.png"));
+  m_window->openFiles({normal, height});
+  const core::Material& material = m_window->document()->material();
+  EXPECT_EQ(QString::fromStdString(material.map(core::MapSlot::Normal).sourcePath), normal);
+  EXPECT_EQ(QString::fromStdString(material.map(core::MapSlot::Height).sourcePath), height);
+  // Each map replacement is its own undo step.
+  EXPECT_EQ(m_window->document()->undoStack()->count(), 2);
+  EXPECT_TRUE(m_window->windowTitle().contains(QLatin1Char('*')));
+}
+
+TEST_F(MainWindowTest, CtrlDragMovesTheLightAndPlainDragOrbits) {
+  ui::ViewportWidget* viewport = m_window->viewport();
+  const float azimuth = viewport->view().light.azimuthDeg;
+  const float yaw = viewport->view().camera.yawDeg;
+  const QPoint centre = viewport->rect().center();
+  QTest::mousePress(viewport, Qt::LeftButton, Qt::ControlModifier, centre);
+  QTest::mouseMove(viewport, centre + QPoint(50, 0));
+  QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ControlModifier, centre + QPoint(50, 0));
+  EXPECT_NE(viewport->view().light.azimuthDeg, azimuth);
+  EXPECT_EQ(viewport->view().camera.yawDeg, yaw);
+
+  QTest::mousePress(viewport, Qt::LeftButton, {}, centre);
+  QTest::mouseMove(viewport, centre + QPoint(50, 0));
+  QTest::mouseRelease(viewport, Qt::LeftButton, {}, centre + QPoint(50, 0));
+  EXPECT_NE(viewport->view().camera.yawDeg, yaw);
+}
+
+}  // namespace
+}  // namespace relief::test
