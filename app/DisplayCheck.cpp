@@ -8,15 +8,21 @@
 namespace relief::app {
 
 std::string displayProblem() {
-  const char* platform = std::getenv("QT_QPA_PLATFORM");
-  if (platform && std::string(platform) != "xcb") {
-    return std::string("QT_QPA_PLATFORM=") + platform +
-           " cannot give an OpenGL context; Relief needs an X display (unset it, or run under "
+  const std::string platform = std::getenv("QT_QPA_PLATFORM") ? std::getenv("QT_QPA_PLATFORM") : "";
+  if (platform == "offscreen" || platform == "minimal" || platform == "vnc") {
+    return "QT_QPA_PLATFORM=" + platform +
+           " cannot give an OpenGL context; Relief needs a display (unset it, or run under "
            "xvfb-run)";
   }
   const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  const bool wantsWayland = platform.rfind("wayland", 0) == 0;
+  if (wantsWayland || ((!display || !*display) && wayland && *wayland)) {
+    // Qt reports its own Wayland problems clearly; nothing to pre-check.
+    return {};
+  }
   if (!display || !*display) {
-    return "no X display (DISPLAY is not set); run under xvfb-run on a headless machine, e.g. "
+    return "no display (DISPLAY is not set); on a headless machine run under xvfb-run, e.g. "
            "xvfb-run -a relief-cli render ...";
   }
   xcb_connection_t* connection = xcb_connect(display, nullptr);

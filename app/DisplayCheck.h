@@ -1,5 +1,6 @@
-// Checks that an X display can be reached before Qt's xcb platform is started: Qt aborts the
-// process when it cannot connect, and we want a sentence that says what to do instead.
+// Checks that a display can be reached before Qt's platform plugin starts: Qt aborts the
+// process when it cannot connect to X, and we want a sentence that says what to do instead.
+// Platforms without OpenGL (offscreen, minimal) are refused the same way.
 #pragma once
 
 #include <string>

@@ -91,6 +91,24 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
   return input;
 }
 
+// Runs one pixel read and turns a failure, or a failure reported late on close (a CRC error in
+// the last chunk), into a message naming the file.
+template <class Read>
+Status readPixels(OIIO::ImageInput& input, const std::string& path, Read read, bool closeAfter) {
+  bool ok = false;
+  {
+    const ThirdPartyAllocationScope oiioMayLeakOnDamagedFiles;
+    ok = read();
+  }
+  if (ok && closeAfter)
+    ok = input.close() && !input.has_error();
+  if (!ok) {
+    return makeError(path + ": the pixel data is damaged or truncated (" +
+                     cleanOiioMessage(input.geterror()) + ")");
+  }
+  return {};
+}
+
 OIIO::TypeDesc chooseFileType(const Image& image, const std::string& ext, SampleFormat format) {
   const bool isExr = ext == ".exr";
   const bool supports16 = ext == ".png" || ext == ".tif" || ext == ".tiff";
@@ -142,22 +160,16 @@ Status verifyImageData(const std::string& path) {
   const OIIO::ImageSpec& spec = input.spec();
   constexpr int kStripRows = 64;
   std::vector<float> strip(std::size_t(spec.width) * std::size_t(spec.nchannels) * kStripRows);
-  for (int y = spec.y; y < spec.y + spec.height; y += kStripRows) {
-    const int end = std::min(y + kStripRows, spec.y + spec.height);
-    bool read = false;
-    {
-      const ThirdPartyAllocationScope oiioMayLeakOnDamagedFiles;
-      read = input.read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+  const int lastRow = spec.y + spec.height;
+  for (int y = spec.y; y < lastRow; y += kStripRows) {
+    const int end = std::min(y + kStripRows, lastRow);
+    const auto readStrip = [&] {
+      return input.read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
                                   strip.data());
+    };
+    if (Status status = readPixels(input, path, readStrip, end == lastRow); !status) {
+      return status;
     }
-    if (!read) {
-      return makeError(path + ": the pixel data is damaged or truncated (" +
-                       cleanOiioMessage(input.geterror()) + ")");
-    }
-  }
-  if (!input.close() || input.has_error()) {
-    return makeError(path + ": the pixel data is damaged or truncated (" +
-                     cleanOiioMessage(input.geterror()) + ")");
   }
   return {};
 }
@@ -174,19 +186,11 @@ Result<Image> loadImage(const std::string& path) {
   Image image(spec.width, spec.height, channels, colorSpaceOf(spec));
   image.setSourceBitsPerChannel(
       spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8)));
-  bool read = false;
-  {
-    const ThirdPartyAllocationScope oiioMayLeakOnDamagedFiles;
-    read = input.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.data());
-  }
-  if (!read) {
-    return makeError(path + ": the pixel data is damaged or truncated (" +
-                     cleanOiioMessage(input.geterror()) + ")");
-  }
-  // Some readers report late failures (a CRC error in the last chunk) only on close.
-  if (!input.close() || input.has_error()) {
-    return makeError(path + ": the pixel data is damaged or truncated (" +
-                     cleanOiioMessage(input.geterror()) + ")");
+  const auto readAll = [&] {
+    return input.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.data());
+  };
+  if (Status status = readPixels(input, path, readAll, true); !status) {
+    return makeError(status.error());
   }
   return image;
 }

@@ -23,7 +23,8 @@ class ThirdPartyAllocationScope {
     __lsan_enable();
   }
 #else
-  ThirdPartyAllocationScope() = default;
+  // User-provided (not defaulted) so that a scope variable does not count as unused.
+  ThirdPartyAllocationScope() {}  // NOLINT(modernize-use-equals-default)
 #endif
   ThirdPartyAllocationScope(const ThirdPartyAllocationScope&) = delete;
   ThirdPartyAllocationScope& operator=(const ThirdPartyAllocationScope&) = delete;

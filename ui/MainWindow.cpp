@@ -7,6 +7,7 @@
 #include "ui/MapsPanel.h"
 #include "ui/MaterialDocument.h"
 #include "ui/ParameterPanel.h"
+#include "ui/QtText.h"
 #include "ui/ViewportWidget.h"
 
 #include <QActionGroup>
@@ -27,10 +28,6 @@
 
 namespace relief::ui {
 namespace {
-
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
 
 const QStringList& imageSuffixes() {
   static const QStringList suffixes = {
@@ -135,7 +132,7 @@ void MainWindow::createMenus() {
   auto* meshGroup = new QActionGroup(this);
   int shortcut = 1;
   for (core::PrimitiveShape shape : core::allPrimitiveShapes()) {
-    const QString name = qstr(core::primitiveShapeName(shape));
+    const QString name = toQString(core::primitiveShapeName(shape));
     QAction* action = meshes->addAction(name.left(1).toUpper() + name.mid(1));
     action->setCheckable(true);
     action->setChecked(shape == core::PrimitiveShape::Plane);
@@ -208,7 +205,7 @@ bool MainWindow::loadMapFile(const QString& path, std::optional<core::MapSlot> s
   if (!slot) {
     QStringList labels;
     for (core::MapSlot candidate : core::kAllMapSlots)
-      labels << qstr(core::mapSlotLabel(candidate));
+      labels << toQString(core::mapSlotLabel(candidate));
     bool ok = false;
     const QString chosen = QInputDialog::getItem(
         this, tr("Which map is this?"),
@@ -230,7 +227,7 @@ bool MainWindow::loadMapFile(const QString& path, std::optional<core::MapSlot> s
   m_lastFolder = QFileInfo(path).absolutePath();
   statusBar()->showMessage(
       tr("Loaded %1 as the %2 map")
-          .arg(QFileInfo(path).fileName(), qstr(core::mapSlotLabel(*slot)).toLower()),
+          .arg(QFileInfo(path).fileName(), toQString(core::mapSlotLabel(*slot)).toLower()),
       5000);
   return true;
 }
@@ -247,7 +244,7 @@ void MainWindow::openFiles(const QStringList& paths) {
 
 void MainWindow::chooseMapFile(std::optional<core::MapSlot> slot) {
   const QString title =
-      slot ? tr("Load %1 map").arg(qstr(core::mapSlotLabel(*slot)).toLower()) : tr("Open map");
+      slot ? tr("Load %1 map").arg(toQString(core::mapSlotLabel(*slot)).toLower()) : tr("Open map");
   const QString path = QFileDialog::getOpenFileName(this, title, m_lastFolder, imageFilter());
   if (!path.isEmpty())
     loadMapFile(path, slot);

@@ -3,6 +3,7 @@
 
 #include "ui/ImageThumbnail.h"
 #include "ui/MaterialDocument.h"
+#include "ui/QtText.h"
 
 #include <QFileInfo>
 #include <QGridLayout>
@@ -12,14 +13,6 @@
 #include <QVBoxLayout>
 
 namespace relief::ui {
-namespace {
-
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
-}  // namespace
-
 MapsPanel::MapsPanel(MaterialDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
   auto* outer = new QVBoxLayout(this);
@@ -39,13 +32,13 @@ MapsPanel::MapsPanel(MaterialDocument* document, QWidget* parent)
 
     auto* load = new QToolButton;
     load->setText(tr("Load…"));
-    load->setObjectName(QStringLiteral("load_") + qstr(core::mapSlotName(slot)));
+    load->setObjectName(QStringLiteral("load_") + toQString(core::mapSlotName(slot)));
     load->setToolTip(tr("Load the %1 map from a file (or drop a file on the window).")
-                         .arg(qstr(core::mapSlotLabel(slot)).toLower()));
+                         .arg(toQString(core::mapSlotLabel(slot)).toLower()));
     auto* clear = new QToolButton;
     clear->setText(tr("Clear"));
     clear->setToolTip(tr("Remove the %1 map; a neutral default is used instead.")
-                          .arg(qstr(core::mapSlotLabel(slot)).toLower()));
+                          .arg(toQString(core::mapSlotLabel(slot)).toLower()));
     connect(load, &QToolButton::clicked, this, [this, slot] { Q_EMIT loadRequested(slot); });
     connect(clear, &QToolButton::clicked, this, [this, slot] { m_document->clearMap(slot); });
 
@@ -66,7 +59,7 @@ MapsPanel::MapsPanel(MaterialDocument* document, QWidget* parent)
 void MapsPanel::showSlot(core::MapSlot slot) {
   const Row& row = m_rows[std::size_t(slot)];
   const core::MaterialMap& map = m_document->material().map(slot);
-  const QString label = QStringLiteral("<b>%1</b>").arg(qstr(core::mapSlotLabel(slot)));
+  const QString label = QStringLiteral("<b>%1</b>").arg(toQString(core::mapSlotLabel(slot)));
   if (!map.image) {
     row.thumbnail->setPixmap({});
     row.thumbnail->setText(tr("none"));

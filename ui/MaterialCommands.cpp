@@ -2,18 +2,11 @@
 #include "ui/MaterialCommands.h"
 
 #include "ui/MaterialDocument.h"
+#include "ui/QtText.h"
 
 #include <QFileInfo>
 
 namespace relief::ui {
-namespace {
-
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
-}  // namespace
-
 SetParameterCommand::SetParameterCommand(MaterialDocument* document, core::ParamId id,
                                          double oldValue, double newValue, int interactiveEdit)
     : m_document(document),
@@ -21,7 +14,7 @@ SetParameterCommand::SetParameterCommand(MaterialDocument* document, core::Param
       m_oldValue(oldValue),
       m_newValue(newValue),
       m_interactiveEdit(interactiveEdit) {
-  setText(QObject::tr("Change %1").arg(qstr(core::parameterSpec(id).label)));
+  setText(QObject::tr("Change %1").arg(toQString(core::parameterSpec(id).label)));
 }
 
 void SetParameterCommand::undo() {
@@ -58,7 +51,7 @@ void SetAllParametersCommand::redo() {
 SetTechniqueCommand::SetTechniqueCommand(MaterialDocument* document, core::Technique oldTechnique,
                                          core::Technique newTechnique)
     : m_document(document), m_oldTechnique(oldTechnique), m_newTechnique(newTechnique) {
-  setText(QObject::tr("Technique: %1").arg(qstr(core::techniqueLabel(newTechnique))));
+  setText(QObject::tr("Technique: %1").arg(toQString(core::techniqueLabel(newTechnique))));
 }
 
 void SetTechniqueCommand::undo() {
@@ -71,7 +64,7 @@ void SetTechniqueCommand::redo() {
 SetMapCommand::SetMapCommand(MaterialDocument* document, core::MapSlot slot,
                              core::MaterialMap oldMap, core::MaterialMap newMap)
     : m_document(document), m_slot(slot), m_oldMap(std::move(oldMap)), m_newMap(std::move(newMap)) {
-  const QString label = qstr(core::mapSlotLabel(slot));
+  const QString label = toQString(core::mapSlotLabel(slot));
   setText(m_newMap.image
               ? QObject::tr("Load %1 map (%2)")
                     .arg(label, QFileInfo(QString::fromStdString(m_newMap.sourcePath)).fileName())

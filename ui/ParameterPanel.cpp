@@ -3,6 +3,7 @@
 
 #include "ui/MaterialDocument.h"
 #include "ui/ParameterSlider.h"
+#include "ui/QtText.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -13,14 +14,6 @@
 #include <QVBoxLayout>
 
 namespace relief::ui {
-namespace {
-
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
-}  // namespace
-
 ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_technique(new QComboBox) {
   auto* outer = new QVBoxLayout(this);
@@ -29,8 +22,8 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
   outer->addLayout(form);
 
   for (core::Technique technique : core::allTechniques()) {
-    m_technique->addItem(qstr(core::techniqueLabel(technique)),
-                         qstr(core::techniqueName(technique)));
+    m_technique->addItem(toQString(core::techniqueLabel(technique)),
+                         toQString(core::techniqueName(technique)));
   }
   m_technique->setToolTip(tr("How the relief is rendered (the CLI's --technique)."));
   form->addRow(tr("Technique"), m_technique);
@@ -40,10 +33,10 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
 
   for (const core::ParameterSpec& spec : core::allParameters()) {
     QWidget* editor = createEditor(spec);
-    editor->setObjectName(qstr(spec.name));
-    editor->setToolTip(qstr(core::describeParameter(spec)));
+    editor->setObjectName(toQString(spec.name));
+    editor->setToolTip(toQString(core::describeParameter(spec)));
     m_editors[std::size_t(spec.id)] = editor;
-    auto* label = new QLabel(qstr(spec.label));
+    auto* label = new QLabel(toQString(spec.label));
     label->setToolTip(editor->toolTip());
     form->addRow(label, editor);
   }
@@ -72,7 +65,7 @@ QWidget* ParameterPanel::createEditor(const core::ParameterSpec& spec) {
     case core::ParamKind::Choice: {
       auto* box = new QComboBox;
       for (std::string_view choice : spec.choices)
-        box->addItem(qstr(choice));
+        box->addItem(toQString(choice));
       connect(box, &QComboBox::activated, this,
               [this, id](int index) { m_document->setParameter(id, double(index)); });
       return box;

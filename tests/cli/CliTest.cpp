@@ -219,6 +219,26 @@ TEST(Cli, RenderWithoutADisplaySaysSo) {
   EXPECT_NE(run.err.find("xvfb-run"), std::string::npos) << run.err;
 }
 
+TEST(Cli, EditorWithoutADisplaySaysSoInsteadOfCrashing) {
+  // Qt aborts when xcb cannot connect and crashes when a QOpenGLWidget gets no context; the
+  // editor must check first and explain.
+  for (const char* platform : {"", "offscreen"}) {
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("DISPLAY"));
+    environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QString::fromLatin1(platform));
+    if (!*platform)
+      environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(RELIEF_GUI_PATH), {});
+    ASSERT_TRUE(process.waitForFinished(60000));
+    EXPECT_EQ(process.exitStatus(), QProcess::NormalExit) << platform;
+    EXPECT_NE(process.exitCode(), 0) << platform;
+    EXPECT_NE(process.readAllStandardError().indexOf("xvfb-run"), -1) << platform;
+  }
+}
+
 TEST(Cli, EveryCommandHasHelp) {
   for (const QString& command : {QStringLiteral("render"), QStringLiteral("info")}) {
     CliRun run = runCli({command, QStringLiteral("--help")});
