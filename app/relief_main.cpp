@@ -6,10 +6,14 @@
 #include "ui/DarkTheme.h"
 #include "ui/MainWindow.h"
 
+#include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QCommandLineParser>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include <cstdio>
 
@@ -32,6 +36,18 @@ int main(int argc, char* argv[]) {
       "Relief material editor. Opens the bundled bricks sample when started without files."));
   parser.addHelpOption();
   parser.addVersionOption();
+  const QCommandLineOption screenshot(
+      QStringLiteral("screenshot"),
+      QStringLiteral("Save a picture of the window to <file> once it has drawn, then quit."),
+      QStringLiteral("file"));
+  parser.addOption(screenshot);
+  const QCommandLineOption compare(QStringLiteral("compare"),
+                                   QStringLiteral("Start with the A|B split comparison on."));
+  parser.addOption(compare);
+  const QCommandLineOption view(QStringLiteral("view"),
+                                QStringLiteral("Start with a debug view (as relief-cli --view)."),
+                                QStringLiteral("name"));
+  parser.addOption(view);
   parser.addPositionalArgument(QStringLiteral("files"),
                                QStringLiteral("Presets (.relief) or maps (images) to open."),
                                QStringLiteral("[files...]"));
@@ -54,5 +70,27 @@ int main(int argc, char* argv[]) {
       files << sample;
   }
   window.openFiles(files);
+  if (parser.isSet(compare))
+    window.compareAction()->setChecked(true);
+  if (parser.isSet(view)) {
+    const int index = window.debugViewBox()->findData(parser.value(view));
+    if (index < 0) {
+      std::fprintf(stderr, "relief: --view %s: unknown view\n",
+                   parser.value(view).toLocal8Bit().constData());
+      return 2;
+    }
+    window.debugViewBox()->setCurrentIndex(index);
+    Q_EMIT window.debugViewBox()->activated(index);
+  }
+  if (parser.isSet(screenshot)) {
+    const QString path = parser.value(screenshot);
+    QTimer::singleShot(1500, &window, [&window, path] {
+      // From the screen, so overlays painted over the GL frame are in the picture too.
+      const bool saved = window.screen()->grabWindow(window.winId()).save(path);
+      std::fprintf(saved ? stdout : stderr, "relief: %s %s\n", saved ? "saved" : "cannot save",
+                   path.toLocal8Bit().constData());
+      QApplication::exit(saved ? 0 : 1);
+    });
+  }
   return application.exec();
 }

@@ -2,6 +2,7 @@
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent Test)
 find_package(OpenImageIO REQUIRED CONFIG)
 find_package(glm REQUIRED)
+find_package(assimp REQUIRED)
 find_package(Threads REQUIRED)
 
 # Debian's OpenImageIO config lists /usr/include/opencv4 as an include directory even when

@@ -15,13 +15,37 @@
 namespace relief::core {
 
 enum class ParamId {
+  // Relief
+  HeightScale,
+  HeightBias,
+  HeightIsDepth,
+  HeightInNormalAlpha,
+  // Sampling
+  MinSamples,
+  MaxSamples,
+  RefinementSteps,
+  LodFade,
+  // Self-shadowing
+  ShadowMode,
+  ShadowStrength,
+  ShadowSamples,
+  ShadowSoftness,
+  ShadowLimit,
+  // Mapping
   Tiling,
+  UvEdge,
+  DepthOffset,
+  // Surface
   NormalStrength,
   NormalYDown,
   Specular,
   Shininess,
   Count,
 };
+
+// Values of the Choice parameters.
+enum class ShadowMode { Off, Hard, Soft };
+enum class UvEdge { Repeat, Clamp };
 
 constexpr std::size_t kParamCount = std::size_t(ParamId::Count);
 
@@ -31,6 +55,7 @@ struct ParameterSpec {
   ParamId id;
   std::string_view name;         // preset key, CLI --set name
   std::string_view label;        // shown next to the control
+  std::string_view group;        // the panel section it appears in
   std::string_view unit;         // stated in tooltips and --help
   std::string_view description;  // what it does, for tooltips
   ParamKind kind;

@@ -14,9 +14,17 @@ struct TechniqueInfo {
 
 constexpr std::array kTechniques = {
     TechniqueInfo{Technique::Normal, "normal", "Normal mapping"},
+    TechniqueInfo{Technique::Parallax, "parallax", "Parallax (Kaneko)"},
+    TechniqueInfo{Technique::ParallaxLimited, "parallax-limited",
+                  "Parallax, offset limited (Welsh)"},
+    TechniqueInfo{Technique::Steep, "steep", "Steep parallax"},
+    TechniqueInfo{Technique::Pom, "pom", "Parallax occlusion mapping"},
+    TechniqueInfo{Technique::Relief, "relief", "Relief mapping (binary refinement)"},
 };
 
-constexpr std::array kTechniqueList = {Technique::Normal};
+constexpr std::array kTechniqueList = {
+    Technique::Normal, Technique::Parallax, Technique::ParallaxLimited,
+    Technique::Steep,  Technique::Pom,      Technique::Relief};
 
 }  // namespace
 
@@ -30,6 +38,11 @@ std::string_view techniqueName(Technique technique) {
 
 std::string_view techniqueLabel(Technique technique) {
   return kTechniques[std::size_t(technique)].label;
+}
+
+bool isMarchingTechnique(Technique technique) {
+  return technique == Technique::Steep || technique == Technique::Pom ||
+         technique == Technique::Relief;
 }
 
 std::optional<Technique> findTechnique(std::string_view name) {

@@ -9,8 +9,17 @@
 namespace relief::core {
 
 enum class Technique {
-  Normal,  // per-pixel normal mapping in tangent space (reference 004)
+  Normal,           // per-pixel normal mapping in tangent space (reference 004)
+  Parallax,         // Kaneko: T + h_scaled * V.xy / V.z (references 000, 004)
+  ParallaxLimited,  // Welsh's offset limiting: T + h_scaled * V.xy (references 000, 004)
+  Steep,            // layered linear search, first layer below the surface, no interpolation
+  Pom,              // parallax occlusion mapping as reference 001 gives it
+  Relief,           // linear search, then binary refinement
 };
+
+// Whether the technique marches along the view ray (and so can self-shadow and has a cost
+// that depends on the sample counts).
+bool isMarchingTechnique(Technique technique);
 
 std::span<const Technique> allTechniques();
 std::string_view techniqueName(Technique technique);

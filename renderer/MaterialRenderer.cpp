@@ -1,10 +1,18 @@
 // MaterialRenderer; see MaterialRenderer.h.
 #include "renderer/MaterialRenderer.h"
 
+#include "renderer/ShaderVariant.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <QMatrix4x4>
+#include <QOpenGLFramebufferObject>
+#include <QVector2D>
 #include <QVector3D>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace relief::renderer {
 namespace {
@@ -23,6 +31,13 @@ QVector3D toQt(const glm::vec3& v) {
   return QVector3D(v.x, v.y, v.z);
 }
 
+std::string joined(const std::vector<std::string>& parts) {
+  std::string key;
+  for (const std::string& part : parts)
+    key += part + ";";
+  return key;
+}
+
 }  // namespace
 
 MaterialRenderer::MaterialRenderer() = default;
@@ -34,15 +49,15 @@ MaterialRenderer::~MaterialRenderer() {
 
 core::Status MaterialRenderer::initialize() {
   initializeOpenGLFunctions();
-  if (core::Status status = m_materialProgram.build("material.vert", "material.frag"); !status) {
-    return status;
-  }
   if (core::Status status = m_backgroundProgram.build("background.vert", "background.frag");
       !status) {
     return status;
   }
+  // The default variant up front, so a broken shader shows at start-up, not at first draw.
+  std::string error;
+  if (!programFor(m_material, FrameSettings{}, error))
+    return core::makeError(error);
   glGenVertexArrays(1, &m_emptyVao);
-  m_textures.sync(m_material);
   m_initialized = true;
   return {};
 }
@@ -52,7 +67,7 @@ void MaterialRenderer::releaseResources() {
     return;
   m_mesh.release();
   m_textures.release();
-  m_materialProgram.release();
+  m_materialPrograms.clear();
   m_backgroundProgram.release();
   glDeleteVertexArrays(1, &m_emptyVao);
   m_emptyVao = 0;
@@ -61,12 +76,11 @@ void MaterialRenderer::releaseResources() {
 
 void MaterialRenderer::setMesh(const core::Mesh& mesh) {
   m_mesh.upload(*this, mesh);
+  m_meshBounds = mesh.bounds();
 }
 
 void MaterialRenderer::setMaterial(const core::Material& material) {
   m_material = material;
-  if (m_initialized)
-    m_textures.sync(m_material);
 }
 
 std::string MaterialRenderer::rendererDescription() {
@@ -76,23 +90,89 @@ std::string MaterialRenderer::rendererDescription() {
          (version ? version : "unknown");
 }
 
-void MaterialRenderer::render(const RenderView& view, int width, int height, unsigned framebuffer) {
+int MaterialRenderer::maxImageSize() {
+  GLint renderbufferMax = 0;
+  GLint viewportMax[2] = {0, 0};
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbufferMax);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewportMax);
+  return std::min({renderbufferMax, viewportMax[0], viewportMax[1]});
+}
+
+ShaderProgram* MaterialRenderer::programFor(const core::Material& material,
+                                            const FrameSettings& frame, std::string& error) {
+  const std::vector<std::string> defines =
+      materialShaderDefines(material, frame.debugView, frame.output);
+  std::unique_ptr<ShaderProgram>& program = m_materialPrograms[joined(defines)];
+  if (!program) {
+    auto built = std::make_unique<ShaderProgram>();
+    if (core::Status status = built->build("material.vert", "material.frag", defines); !status) {
+      m_materialPrograms.erase(joined(defines));
+      error = status.error();
+      return nullptr;
+    }
+    program = std::move(built);
+  }
+  return program.get();
+}
+
+core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int height,
+                                      unsigned framebuffer) {
   Q_ASSERT(m_initialized);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
   glDepthMask(GL_TRUE);
   glClearDepthf(1.0f);
-  glClear(GL_DEPTH_BUFFER_BIT);
+  if (frame.output == FrameOutput::Display) {
+    glClear(GL_DEPTH_BUFFER_BIT);
+    drawBackground(frame.view);
+  } else {
+    // Data outputs: alpha 0 marks pixels the mesh does not cover.
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
 
-  drawBackground(view);
+  const float aspect = float(width) / float(std::max(height, 1));
+  std::string error;
+  ShaderProgram* programA = programFor(m_material, frame, error);
+  if (!programA)
+    return core::makeError(error);
+  if (!frame.split) {
+    drawMaterial(*programA, m_material, frame, aspect);
+  } else {
+    // A left of the divider, B right of it, the same camera for both.
+    const int divider =
+        std::clamp(int(std::lround(frame.split->dividerFraction * float(width))), 0, width);
+    ShaderProgram* programB = programFor(frame.split->material, frame, error);
+    if (!programB)
+      return core::makeError(error);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, divider, height);
+    drawMaterial(*programA, m_material, frame, aspect);
+    glScissor(divider, 0, width - divider, height);
+    drawMaterial(*programB, frame.split->material, frame, aspect);
+    glDisable(GL_SCISSOR_TEST);
+  }
+  if (frame.split) {
+    m_textures.releaseUnused({&m_material, &frame.split->material});
+  } else {
+    m_textures.releaseUnused({&m_material});
+  }
+  return {};
+}
 
-  QOpenGLShaderProgram& program = m_materialProgram.program();
+void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material& material,
+                                    const FrameSettings& frame, float aspect) {
+  QOpenGLShaderProgram& program = shader.program();
   program.bind();
-  setMaterialUniforms(program, view, float(width) / float(std::max(height, 1)));
-  m_textures.bind(kFirstMapUnit);
+  setUniforms(program, material, frame, aspect);
+  for (MapSlot slot : core::kAllMapSlots) {
+    m_textures.texture(material, slot).bind(unsigned(kFirstMapUnit + int(slot)));
+  }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
+  glClear(GL_DEPTH_BUFFER_BIT);
   // Both sides are drawn: an open mesh (the plane) must not vanish when orbiting below it.
   glDisable(GL_CULL_FACE);
   m_mesh.draw(*this);
@@ -112,8 +192,9 @@ void MaterialRenderer::drawBackground(const RenderView& view) {
   program.release();
 }
 
-void MaterialRenderer::setMaterialUniforms(QOpenGLShaderProgram& program, const RenderView& view,
-                                           float aspect) {
+void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Material& material,
+                                   const FrameSettings& frame, float aspect) {
+  const RenderView& view = frame.view;
   const glm::mat4 model(1.0f);
   const glm::mat4 viewProjection = view.camera.projectionMatrix(aspect) * view.camera.viewMatrix();
   program.setUniformValue("uModel", toQt(model));
@@ -123,18 +204,84 @@ void MaterialRenderer::setMaterialUniforms(QOpenGLShaderProgram& program, const 
   program.setUniformValue("uLightDirection", toQt(view.light.direction()));
   program.setUniformValue("uLightColor", toQt(view.light.color * view.light.intensity));
   program.setUniformValue("uAmbient", view.light.ambient);
+  const float radius = m_meshBounds.sphereRadius;
+  program.setUniformValue(
+      "uDepthDisplayRange",
+      QVector2D(std::max(view.camera.distance - radius, 0.0f), view.camera.distance + radius));
 
-  program.setUniformValue("uTiling", m_material.parameterf(ParamId::Tiling));
-  program.setUniformValue("uNormalStrength", m_material.parameterf(ParamId::NormalStrength));
-  program.setUniformValue("uNormalYDown", m_material.parameterFlag(ParamId::NormalYDown));
-  program.setUniformValue("uSpecular", m_material.parameterf(ParamId::Specular));
-  program.setUniformValue("uShininess", m_material.parameterf(ParamId::Shininess));
+  const auto parameter = [&material](ParamId id) { return material.parameterf(id); };
+  const auto count = [&material](ParamId id) { return int(material.parameter(id)); };
+  program.setUniformValue("uHeightScale", parameter(ParamId::HeightScale));
+  program.setUniformValue("uHeightBias", parameter(ParamId::HeightBias));
+  program.setUniformValue("uHeightIsDepth", material.parameterFlag(ParamId::HeightIsDepth));
+  program.setUniformValue("uMinSamples", count(ParamId::MinSamples));
+  program.setUniformValue("uMaxSamples", count(ParamId::MaxSamples));
+  program.setUniformValue("uRefinementSteps", count(ParamId::RefinementSteps));
+  program.setUniformValue("uLodFade", parameter(ParamId::LodFade));
+  program.setUniformValue("uShadowStrength", parameter(ParamId::ShadowStrength));
+  program.setUniformValue("uShadowSamples", count(ParamId::ShadowSamples));
+  program.setUniformValue("uShadowSoftness",
+                          float(glm::radians(material.parameter(ParamId::ShadowSoftness))));
+  program.setUniformValue("uShadowLimit", material.parameterFlag(ParamId::ShadowLimit));
+  program.setUniformValue("uTiling", parameter(ParamId::Tiling));
+  program.setUniformValue("uNormalStrength", parameter(ParamId::NormalStrength));
+  program.setUniformValue("uNormalYDown", material.parameterFlag(ParamId::NormalYDown));
+  program.setUniformValue("uSpecular", parameter(ParamId::Specular));
+  program.setUniformValue("uShininess", parameter(ParamId::Shininess));
+
+  const bool packed = material.parameterFlag(ParamId::HeightInNormalAlpha);
+  const core::Image* heightSource = material.image(packed ? MapSlot::Normal : MapSlot::Height);
+  program.setUniformValue("uHeightMapSize", heightSource ? QVector2D(float(heightSource->width()),
+                                                                     float(heightSource->height()))
+                                                         : QVector2D(1.0f, 1.0f));
 
   program.setUniformValue("uColorMap", kFirstMapUnit + int(MapSlot::Color));
   program.setUniformValue("uNormalMap", kFirstMapUnit + int(MapSlot::Normal));
   program.setUniformValue("uHeightMap", kFirstMapUnit + int(MapSlot::Height));
   program.setUniformValue("uOcclusionMap", kFirstMapUnit + int(MapSlot::AmbientOcclusion));
   program.setUniformValue("uRoughnessMap", kFirstMapUnit + int(MapSlot::Roughness));
+}
+
+core::Result<core::Image> MaterialRenderer::renderToImage(const FrameSettings& frame, int width,
+                                                          int height) {
+  const int limit = maxImageSize();
+  if (width < 1 || height < 1 || width > limit || height > limit) {
+    return core::makeError("cannot render " + std::to_string(width) + "x" + std::to_string(height) +
+                           ": sizes must be 1 to " + std::to_string(limit) + " pixels on this GPU");
+  }
+  const bool display = frame.output == FrameOutput::Display;
+  QOpenGLFramebufferObjectFormat format;
+  format.setAttachment(QOpenGLFramebufferObject::Depth);
+  format.setInternalTextureFormat(display ? GL_RGBA8 : GL_RGBA32F);
+  QOpenGLFramebufferObject fbo(width, height, format);
+  if (!fbo.isValid()) {
+    return core::makeError("cannot create a " + std::to_string(width) + "x" +
+                           std::to_string(height) + " framebuffer (out of GPU memory?)");
+  }
+  if (core::Status status = render(frame, width, height, fbo.handle()); !status) {
+    return core::makeError(status.error());
+  }
+
+  core::Image image(width, height, 4, display ? core::ColorSpace::Srgb : core::ColorSpace::Linear);
+  image.setSourceBitsPerChannel(display ? 8 : 32);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.handle());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (display) {
+    std::vector<unsigned char> rgba(image.valueCount());
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    for (std::size_t i = 0; i < rgba.size(); ++i)
+      image.data()[i] = float(rgba[i]) / 255.0f;
+  } else {
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image.data());
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // GL rows start at the bottom; Image rows start at the top.
+  const std::size_t rowValues = std::size_t(width) * 4;
+  for (int y = 0; y < height / 2; ++y) {
+    std::swap_ranges(image.pixel(0, y), image.pixel(0, y) + rowValues,
+                     image.pixel(0, height - 1 - y));
+  }
+  return image;
 }
 
 }  // namespace relief::renderer

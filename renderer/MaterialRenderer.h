@@ -1,18 +1,22 @@
-// MaterialRenderer: draws a mesh with a material for a view. The viewport, the offscreen
-// renderer (CLI, thumbnails, tests) all call render() with their own framebuffer, so every
-// picture Relief makes comes from this one code path. All calls need the same current context.
+// MaterialRenderer: draws a mesh with a material for a frame (view, debug view, output kind,
+// optional A/B split). The viewport, the offscreen renderer (CLI, thumbnails, tests) and the
+// error view all call it, so every picture Relief makes comes from this one code path. All
+// calls need the same current context.
 #pragma once
 
+#include "core/Image.h"
 #include "core/Material.h"
 #include "core/Mesh.h"
 #include "core/Result.h"
+#include "renderer/FrameSettings.h"
 #include "renderer/GpuMesh.h"
-#include "renderer/MaterialTextures.h"
-#include "renderer/RenderView.h"
 #include "renderer/ShaderProgram.h"
+#include "renderer/TextureCache.h"
 
 #include <QOpenGLExtraFunctions>
 
+#include <map>
+#include <memory>
 #include <string>
 
 namespace relief::renderer {
@@ -24,31 +28,44 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   MaterialRenderer(const MaterialRenderer&) = delete;
   MaterialRenderer& operator=(const MaterialRenderer&) = delete;
 
-  // Compiles the shaders and creates GL objects; fails with the mapped shader log.
+  // Compiles the base shaders and creates GL objects; fails with the mapped shader log.
   core::Status initialize();
   // Frees every GL object; call with the context current (before it is destroyed).
   void releaseResources();
   bool isInitialized() const { return m_initialized; }
 
   void setMesh(const core::Mesh& mesh);
-  // Uploads the maps that changed since the last call and takes the parameters.
   void setMaterial(const core::Material& material);
+  const core::Material& material() const { return m_material; }
 
-  // Draws into `framebuffer` (0 for the window's, or an FBO id) at width x height pixels.
-  void render(const RenderView& view, int width, int height, unsigned framebuffer);
+  // Draws into `framebuffer` (the window's or an FBO) at width x height pixels. A shader
+  // variant that does not compile leaves the background and returns the mapped log.
+  core::Status render(const FrameSettings& frame, int width, int height, unsigned framebuffer);
 
-  // GL_RENDERER and GL_VERSION of the context, for the status bar and reports.
+  // Renders into an offscreen framebuffer and reads it back: RGBA8 sRGB for Display output,
+  // RGBA32F for data. Rows top first.
+  core::Result<core::Image> renderToImage(const FrameSettings& frame, int width, int height);
+
+  // Largest width or height renderToImage accepts on this GPU.
+  int maxImageSize();
+  // GL_RENDERER and GL_VERSION, for the status bar and reports.
   std::string rendererDescription();
 
  private:
+  ShaderProgram* programFor(const core::Material& material, const FrameSettings& frame,
+                            std::string& error);
   void drawBackground(const RenderView& view);
-  void setMaterialUniforms(QOpenGLShaderProgram& program, const RenderView& view, float aspect);
+  void drawMaterial(ShaderProgram& program, const core::Material& material,
+                    const FrameSettings& frame, float aspect);
+  void setUniforms(QOpenGLShaderProgram& program, const core::Material& material,
+                   const FrameSettings& frame, float aspect);
 
   bool m_initialized = false;
-  ShaderProgram m_materialProgram;
+  std::map<std::string, std::unique_ptr<ShaderProgram>> m_materialPrograms;
   ShaderProgram m_backgroundProgram;
   GpuMesh m_mesh;
-  MaterialTextures m_textures;
+  core::Bounds m_meshBounds;
+  TextureCache m_textures;
   core::Material m_material;
   unsigned m_emptyVao = 0;  // core profile needs a bound VAO even for attribute-less draws
 };

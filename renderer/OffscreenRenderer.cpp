@@ -6,11 +6,6 @@
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
-#include <QOpenGLExtraFunctions>
-#include <QOpenGLFramebufferObject>
-
-#include <algorithm>
-#include <vector>
 
 namespace relief::renderer {
 
@@ -43,19 +38,13 @@ core::Result<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::create() {
   if (!self->makeCurrent()) {
     return core::makeError("cannot make the offscreen OpenGL context current");
   }
-  QOpenGLExtraFunctions* gl = self->m_context->extraFunctions();
-  GLint renderbufferMax = 0;
-  GLint viewportMax[2] = {0, 0};
-  gl->glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbufferMax);
-  gl->glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewportMax);
-  self->m_maxSize = std::min({renderbufferMax, viewportMax[0], viewportMax[1]});
-
   self->m_renderer = std::make_unique<MaterialRenderer>();
   if (core::Status status = self->m_renderer->initialize(); !status) {
     self->m_renderer->releaseResources();
     self->m_renderer.reset();
     return core::makeError(status.error());
   }
+  self->m_maxSize = self->m_renderer->maxImageSize();
   return self;
 }
 
@@ -69,42 +58,24 @@ void OffscreenRenderer::setMaterial(const core::Material& material) {
     m_renderer->setMaterial(material);
 }
 
-core::Result<core::Image> OffscreenRenderer::render(const RenderView& view, int width, int height) {
-  if (width < 1 || height < 1 || width > m_maxSize || height > m_maxSize) {
-    return core::makeError("cannot render " + std::to_string(width) + "x" + std::to_string(height) +
-                           ": sizes must be 1 to " + std::to_string(m_maxSize) +
-                           " pixels on this GPU");
-  }
+core::Result<core::Image> OffscreenRenderer::render(const FrameSettings& frame, int width,
+                                                    int height) {
   if (!makeCurrent())
     return core::makeError("cannot make the offscreen OpenGL context current");
+  return m_renderer->renderToImage(frame, width, height);
+}
 
-  QOpenGLFramebufferObjectFormat format;
-  format.setAttachment(QOpenGLFramebufferObject::Depth);
-  format.setInternalTextureFormat(GL_RGBA8);
-  QOpenGLFramebufferObject fbo(width, height, format);
-  if (!fbo.isValid()) {
-    return core::makeError("cannot create a " + std::to_string(width) + "x" +
-                           std::to_string(height) + " framebuffer (out of GPU memory?)");
-  }
-  m_renderer->render(view, width, height, fbo.handle());
+core::Result<core::Image> OffscreenRenderer::render(const RenderView& view, int width, int height) {
+  FrameSettings frame;
+  frame.view = view;
+  return render(frame, width, height);
+}
 
-  QOpenGLExtraFunctions* gl = m_context->extraFunctions();
-  std::vector<unsigned char> rgba(std::size_t(width) * std::size_t(height) * 4);
-  gl->glBindFramebuffer(GL_FRAMEBUFFER, fbo.handle());
-  gl->glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl->glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-
-  // GL rows start at the bottom; Image rows start at the top.
-  core::Image image(width, height, 4, core::ColorSpace::Srgb);
-  image.setSourceBitsPerChannel(8);
-  for (int y = 0; y < height; ++y) {
-    const unsigned char* row = &rgba[std::size_t(height - 1 - y) * std::size_t(width) * 4];
-    float* out = image.pixel(0, y);
-    for (int i = 0; i < width * 4; ++i)
-      out[i] = float(row[i]) / 255.0f;
-  }
-  return image;
+core::Result<ErrorViewInputs> OffscreenRenderer::renderErrorViewInputs(const FrameSettings& frame,
+                                                                       int width, int height) {
+  if (!makeCurrent())
+    return core::makeError("cannot make the offscreen OpenGL context current");
+  return relief::renderer::renderErrorViewInputs(*m_renderer, frame, width, height);
 }
 
 }  // namespace relief::renderer

@@ -7,7 +7,8 @@
 #include "core/Material.h"
 #include "core/Mesh.h"
 #include "core/Result.h"
-#include "renderer/RenderView.h"
+#include "renderer/ErrorView.h"
+#include "renderer/FrameSettings.h"
 
 #include <memory>
 
@@ -29,8 +30,14 @@ class OffscreenRenderer {
 
   void setMesh(const core::Mesh& mesh);
   void setMaterial(const core::Material& material);
-  // An sRGB RGBA image, rows top first, exactly what the viewport shows for the same view.
+  // Rows top first: sRGB RGBA8 values for Display output (exactly what the viewport shows for
+  // the same frame), RGBA32F for data outputs.
+  core::Result<core::Image> render(const FrameSettings& frame, int width, int height);
+  // The shaded material (Display output, no debug view).
   core::Result<core::Image> render(const RenderView& view, int width, int height);
+  // The two float passes of the error view (see ErrorView.h).
+  core::Result<ErrorViewInputs> renderErrorViewInputs(const FrameSettings& frame, int width,
+                                                      int height);
 
  private:
   OffscreenRenderer();

@@ -1,10 +1,18 @@
-// Material fragment stage: builds the tangent frame, moves view and light into tangent space
-// (reference 004: Vt = (T.V, B.V, N.V)) and shades with per-pixel Blinn-Phong normal mapping.
+// Material fragment stage. Builds the tangent frame, moves view and light into tangent space
+// (reference 004: Vt = (T.V, B.V, N.V)), finds the visible point with the compiled parallax
+// technique, shadows it from the height field and shades it with Blinn-Phong, or writes one of
+// the debug views.
 
 #include "include/material_inputs.glsl"
+#include "include/debug_views.glsl"
 #include "include/tangent_space.glsl"
+#include "include/height.glsl"
+#include "include/parallax.glsl"
+#include "include/self_shadow.glsl"
 #include "include/normal_mapping.glsl"
 #include "include/lighting.glsl"
+#include "include/displaced_position.glsl"
+#include "include/heatmap.glsl"
 #include "include/color.glsl"
 
 in VertexData {
@@ -16,18 +24,99 @@ in VertexData {
 
 out vec4 fragColor;
 
+// Data views either write raw values (FLOAT_OUTPUT, for EXR and the error view) or a display
+// colour.
+vec4 dataOutput(vec3 raw, vec3 display) {
+#ifdef FLOAT_OUTPUT
+  return vec4(raw, 1.0);
+#else
+  return vec4(display, 1.0);
+#endif
+}
+
 void main() {
   TangentFrame frame = buildTangentFrame(vIn.worldNormal, vIn.worldTangent, gl_FrontFacing);
-  vec3 viewTangent = toTangentSpace(frame, normalize(uCameraPosition - vIn.worldPosition));
-  vec3 lightTangent = toTangentSpace(frame, uLightDirection);
+  vec3 V = normalize(toTangentSpace(frame, normalize(uCameraPosition - vIn.worldPosition)));
+  vec3 L = toTangentSpace(frame, uLightDirection);
+  vec2 entryUv = vIn.uv * uTiling;
+  // Gradients once, outside every loop (reference 001: SampleGrad/textureGrad).
+  vec2 dx = dFdx(entryUv);
+  vec2 dy = dFdy(entryUv);
+  UvToWorld uvFrame = uvToWorld(vIn.worldPosition, entryUv);
 
-  vec2 uv = vIn.uv * uTiling;
+#if DEBUG_VIEW == VIEW_RAY
+  fragColor = vec4(entryUv, V.xy);
+  return;
+#endif
+
+  // Fade the relief out where the height map is read at a coarse mip level.
+  float mipLevel = heightMipLevel(entryUv);
+  float fade = uLodFade > 0.0 ? 1.0 - smoothstep(uLodFade - 1.0, uLodFade, mipLevel) : 1.0;
+  float scale = uHeightScale * fade;
+  float bias = uHeightBias * fade;
+
+  ParallaxResult visible;
+  if (fade > 0.0) {
+    visible = findVisiblePoint(entryUv, V, dx, dy, scale, bias);
+  } else {
+    visible.uv = entryUv;
+    visible.height = sampleHeight(entryUv, dx, dy);
+    visible.samples = 1;
+  }
+
+#ifdef UV_EDGE_CLAMP
+  vec2 meshUv = visible.uv / uTiling;
+  if (any(lessThan(meshUv, vec2(0.0))) || any(greaterThan(meshUv, vec2(1.0)))) discard;
+#endif
+
+  int samples = visible.samples;
+  float shadow = selfShadow(visible.uv, visible.height, L, dx, dy, scale, samples);
+
+  float surfaceHeight = visible.height * scale + bias;  // UV units above the mesh surface
+  vec3 displaced = displacedWorldPosition(uvFrame, vIn.worldPosition, visible.uv - entryUv,
+                                          surfaceHeight, frame.normal);
+#ifdef DEPTH_OFFSET
+  vec4 clip = uViewProjection * vec4(displaced, 1.0);
+  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+#endif
+
   SurfaceSample surface;
-  surface.normal = sampleNormalMap(uv);
-  surface.albedo = texture(uColorMap, uv).rgb;  // sRGB texture: already linear here
-  surface.occlusion = texture(uOcclusionMap, uv).r;
-  surface.roughness = texture(uRoughnessMap, uv).r;
+  surface.normal = sampleNormalMap(visible.uv, dx, dy);
+  surface.albedo = textureGrad(uColorMap, visible.uv, dx, dy).rgb;  // sRGB texture: linear
+  surface.occlusion = textureGrad(uOcclusionMap, visible.uv, dx, dy).r;
+  surface.roughness = textureGrad(uRoughnessMap, visible.uv, dx, dy).r;
 
-  vec3 linearColor = shadeBlinnPhong(surface, lightTangent, viewTangent);
-  fragColor = vec4(linearToSrgb(linearColor), 1.0);
+#if DEBUG_VIEW == VIEW_SHADING
+  fragColor = vec4(linearToSrgb(shadeBlinnPhong(surface, L, V, shadow)), 1.0);
+#elif DEBUG_VIEW == VIEW_HEIGHT
+  fragColor = dataOutput(vec3(visible.height), vec3(visible.height));
+#elif DEBUG_VIEW == VIEW_NORMAL
+  fragColor = vec4(surface.normal * 0.5 + 0.5, 1.0);
+#elif DEBUG_VIEW == VIEW_UV
+  fragColor = dataOutput(vec3(visible.uv, 0.0), vec3(fract(visible.uv), 0.0));
+#elif DEBUG_VIEW == VIEW_OFFSET
+  vec2 offsetTexels = (visible.uv - entryUv) * uHeightMapSize;
+  fragColor = dataOutput(vec3(offsetTexels, 0.0),
+                         vec3(0.5 + 0.5 * offsetTexels / kOffsetDisplayTexels, 0.5));
+#elif DEBUG_VIEW == VIEW_STEPS
+  float most = float(max(uMaxSamples, uMinSamples) + 1 + uRefinementSteps + uShadowSamples);
+  fragColor = dataOutput(vec3(float(samples)), heatmapColor(float(samples) / most));
+#elif DEBUG_VIEW == VIEW_SHADOW
+  fragColor = dataOutput(vec3(1.0 - shadow), vec3(1.0 - shadow));
+#elif DEBUG_VIEW == VIEW_TANGENTS
+  fragColor = vec4(frame.tangent * 0.5 + 0.5, 1.0);
+#elif DEBUG_VIEW == VIEW_MIP
+  fragColor = dataOutput(vec3(mipLevel), heatmapColor(mipLevel / kMipDisplayLevels));
+#elif DEBUG_VIEW == VIEW_DEPTH
+  // The depth the depth buffer receives: of the displaced surface when it is written
+  // (depthOffset), of the mesh surface otherwise.
+#ifdef DEPTH_OFFSET
+  float distanceToEye = length(displaced - uCameraPosition);
+#else
+  float distanceToEye = length(vIn.worldPosition - uCameraPosition);
+#endif
+  float shade = 1.0 - clamp((distanceToEye - uDepthDisplayRange.x) /
+                            max(uDepthDisplayRange.y - uDepthDisplayRange.x, 1e-6), 0.0, 1.0);
+  fragColor = dataOutput(vec3(distanceToEye), vec3(shade));
+#endif
 }

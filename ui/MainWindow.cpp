@@ -3,7 +3,9 @@
 
 #include "core/ImageIO.h"
 #include "core/MaterialPreset.h"
+#include "core/MeshImport.h"
 #include "core/MeshPrimitives.h"
+#include "ui/LightPanel.h"
 #include "ui/MapsPanel.h"
 #include "ui/MaterialDocument.h"
 #include "ui/ParameterPanel.h"
@@ -12,6 +14,7 @@
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -22,8 +25,10 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressBar>
 #include <QScrollArea>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QUndoView>
 
 namespace relief::ui {
@@ -49,6 +54,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_document(new MaterialDocument(this)),
       m_viewport(new ViewportWidget(m_document)),
+      m_progress(new QProgressBar),
       m_frameTime(new QLabel),
       m_rendererLabel(new QLabel) {
   setWindowTitle(tr("Relief"));
@@ -56,7 +62,26 @@ MainWindow::MainWindow(QWidget* parent)
   setCentralWidget(m_viewport);
   setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
   createDocks();
+  createToolBar();
   createMenus();
+
+  m_progress->setMaximumWidth(220);
+  m_progress->setVisible(false);
+  statusBar()->addPermanentWidget(m_progress);
+  connect(m_viewport, &ViewportWidget::errorViewProgress, this, [this](int done, int total) {
+    m_progress->setVisible(total > 0);
+    m_progress->setRange(0, std::max(total, 1));
+    m_progress->setValue(done);
+  });
+  connect(m_viewport, &ViewportWidget::errorViewFinished, this,
+          [this](double mean, double p95, double maximum) {
+            statusBar()->showMessage(
+                tr("UV error against the exact trace: mean %1, 95th percentile %2, max %3 texels")
+                    .arg(mean, 0, 'f', 3)
+                    .arg(p95, 0, 'f', 3)
+                    .arg(maximum, 0, 'f', 2),
+                15000);
+          });
 
   m_frameTime->setToolTip(tr("CPU time of the last frame, including waiting for the GPU"));
   m_frameTime->setMinimumWidth(110);
@@ -99,6 +124,8 @@ void MainWindow::createDocks() {
   addDock(tr("Maps"), QStringLiteral("mapsDock"), m_maps, Qt::LeftDockWidgetArea);
   QDockWidget* parametersDock = addDock(tr("Parameters"), QStringLiteral("parametersDock"),
                                         m_parameters, Qt::RightDockWidgetArea);
+  m_light = new LightPanel(m_viewport);
+  addDock(tr("Light"), QStringLiteral("lightDock"), m_light, Qt::LeftDockWidgetArea);
   auto* history = new QUndoView(m_document->undoStack());
   history->setEmptyLabel(tr("<opened>"));
   QDockWidget* historyDock =
@@ -110,11 +137,70 @@ void MainWindow::createDocks() {
           [this](core::MapSlot slot) { chooseMapFile(slot); });
 }
 
+void MainWindow::createToolBar() {
+  QToolBar* toolBar = addToolBar(tr("View"));
+  toolBar->setObjectName(QStringLiteral("viewToolBar"));
+  toolBar->setMovable(false);
+
+  m_debugView = new QComboBox;
+  m_debugView->setObjectName(QStringLiteral("debugView"));
+  for (core::DebugView view : core::allDebugViews()) {
+    m_debugView->addItem(toQString(core::debugViewLabel(view)),
+                         toQString(core::debugViewName(view)));
+  }
+  m_debugView->setToolTip(
+      tr("What the viewport shows: the shaded material or a diagnostic view "
+         "(the CLI's --view). \"Samples per pixel\" is the cost; \"UV "
+         "error\" compares every pixel with the exact intersection."));
+  connect(m_debugView, &QComboBox::activated, this, [this](int index) {
+    m_viewport->setDebugView(core::allDebugViews()[std::size_t(index)]);
+  });
+  toolBar->addWidget(new QLabel(tr(" View ")));
+  toolBar->addWidget(m_debugView);
+
+  m_meshBox = new QComboBox;
+  m_meshBox->setObjectName(QStringLiteral("mesh"));
+  for (core::PrimitiveShape shape : core::allPrimitiveShapes()) {
+    const QString name = toQString(core::primitiveShapeName(shape));
+    m_meshBox->addItem(name.left(1).toUpper() + name.mid(1));
+  }
+  m_meshBox->setToolTip(tr("The mesh the material is shown on (File > Open Mesh… for your own)."));
+  connect(m_meshBox, &QComboBox::activated, this, [this](int index) {
+    if (index < int(core::allPrimitiveShapes().size())) {
+      m_viewport->setMesh(core::makePrimitive(core::allPrimitiveShapes()[std::size_t(index)]));
+    }
+  });
+  toolBar->addWidget(new QLabel(tr("  Mesh ")));
+  toolBar->addWidget(m_meshBox);
+  toolBar->addSeparator();
+
+  m_compare = toolBar->addAction(tr("Compare A|B"));
+  m_compare->setObjectName(QStringLiteral("compare"));
+  m_compare->setCheckable(true);
+  m_compare->setShortcut(QKeySequence(tr("C")));
+  m_compare->setToolTip(
+      tr("Split the viewport: the live material left (A), a held copy right "
+         "(B), on the same camera. Drag the divider. (C)"));
+  connect(m_compare, &QAction::toggled, m_viewport, &ViewportWidget::setComparing);
+  QAction* hold = toolBar->addAction(tr("Hold as B"));
+  hold->setShortcut(QKeySequence(tr("Shift+C")));
+  hold->setToolTip(
+      tr("Copy the current material to the B side, then change A to compare "
+         "(e.g. POM against parallax-limited, or 64 samples against 16). "
+         "(Shift+C)"));
+  connect(hold, &QAction::triggered, this, [this] {
+    m_viewport->holdCurrentAsComparison();
+    m_compare->setChecked(true);
+  });
+}
+
 void MainWindow::createMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&Open Preset…"), QKeySequence::Open, this, &MainWindow::choosePreset);
   file->addAction(tr("Open &Map…"), QKeySequence(tr("Ctrl+Shift+O")), this,
                   [this] { chooseMapFile(std::nullopt); });
+  file->addAction(tr("Open M&esh…"), QKeySequence(tr("Ctrl+Shift+M")), this,
+                  &MainWindow::chooseMesh);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -129,18 +215,17 @@ void MainWindow::createMenus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Frame Mesh"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameMesh);
   QMenu* meshes = view->addMenu(tr("&Mesh"));
-  auto* meshGroup = new QActionGroup(this);
   int shortcut = 1;
   for (core::PrimitiveShape shape : core::allPrimitiveShapes()) {
     const QString name = toQString(core::primitiveShapeName(shape));
     QAction* action = meshes->addAction(name.left(1).toUpper() + name.mid(1));
-    action->setCheckable(true);
-    action->setChecked(shape == core::PrimitiveShape::Plane);
     action->setShortcut(QKeySequence(QStringLiteral("Ctrl+%1").arg(shortcut++)));
-    meshGroup->addAction(action);
-    connect(action, &QAction::triggered, this,
-            [this, shape] { m_viewport->setMesh(core::makePrimitive(shape)); });
+    connect(action, &QAction::triggered, this, [this, shape] {
+      m_meshBox->setCurrentIndex(int(shape));
+      m_viewport->setMesh(core::makePrimitive(shape));
+    });
   }
+  view->addAction(m_compare);
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     view->addAction(dock->toggleViewAction());
@@ -240,6 +325,40 @@ void MainWindow::openFiles(const QStringList& paths) {
       loadMapFile(path);
     }
   }
+}
+
+bool MainWindow::openMesh(const QString& path) {
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  core::Result<core::ImportedMesh> imported = core::importMesh(path.toStdString());
+  QApplication::restoreOverrideCursor();
+  if (!imported) {
+    QMessageBox::warning(this, tr("Cannot open mesh"), QString::fromStdString(imported.error()));
+    return false;
+  }
+  const core::Mesh& mesh = imported->mesh;
+  statusBar()->showMessage(
+      tr("Opened %1: %2 triangles, tangents %3")
+          .arg(QFileInfo(path).fileName())
+          .arg(mesh.triangleCount())
+          .arg(imported->tangentsFromFile ? tr("from the file") : tr("computed")),
+      8000);
+  const QString label = QFileInfo(path).fileName();
+  const int customIndex = int(core::allPrimitiveShapes().size());
+  if (m_meshBox->count() > customIndex)
+    m_meshBox->removeItem(customIndex);
+  m_meshBox->addItem(label);
+  m_meshBox->setCurrentIndex(customIndex);
+  m_viewport->setMesh(std::move(imported->mesh));
+  m_lastFolder = QFileInfo(path).absolutePath();
+  return true;
+}
+
+void MainWindow::chooseMesh() {
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open mesh"), m_lastFolder,
+      tr("Meshes (%1);;All files (*)").arg(QString::fromStdString(core::meshFileFilter())));
+  if (!path.isEmpty())
+    openMesh(path);
 }
 
 void MainWindow::chooseMapFile(std::optional<core::MapSlot> slot) {

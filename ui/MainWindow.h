@@ -10,10 +10,14 @@
 
 #include <optional>
 
+class QAction;
+class QComboBox;
 class QLabel;
+class QProgressBar;
 
 namespace relief::ui {
 
+class LightPanel;
 class MapsPanel;
 class MaterialDocument;
 class ParameterPanel;
@@ -29,12 +33,18 @@ class MainWindow : public QMainWindow {
   MaterialDocument* document() const { return m_document; }
   ViewportWidget* viewport() const { return m_viewport; }
   ParameterPanel* parameterPanel() const { return m_parameters; }
+  LightPanel* lightPanel() const { return m_light; }
+  QComboBox* debugViewBox() const { return m_debugView; }
+  QComboBox* meshBox() const { return m_meshBox; }
+  QAction* compareAction() const { return m_compare; }
 
   // Opens a preset; reports problems in a dialog (errors) or the status bar (warnings).
   bool openPreset(const QString& path);
   // Loads an image into a slot: the given one, else the one its name hints at, else the one
   // the user picks. Returns false (after telling the user) when the file cannot be used.
   bool loadMapFile(const QString& path, std::optional<core::MapSlot> slot = std::nullopt);
+  // Opens a mesh through Assimp; reports problems in a dialog.
+  bool openMesh(const QString& path);
   // What a drop does: presets are opened, images assigned to slots.
   void openFiles(const QStringList& paths);
 
@@ -48,6 +58,8 @@ class MainWindow : public QMainWindow {
  private:
   void createDocks();
   void createMenus();
+  void createToolBar();
+  void chooseMesh();
   void showFrameTime(double milliseconds);
   void updateTitle();
   void chooseMapFile(std::optional<core::MapSlot> slot);
@@ -58,6 +70,11 @@ class MainWindow : public QMainWindow {
   ViewportWidget* m_viewport;
   ParameterPanel* m_parameters = nullptr;
   MapsPanel* m_maps = nullptr;
+  LightPanel* m_light = nullptr;
+  QComboBox* m_debugView = nullptr;
+  QComboBox* m_meshBox = nullptr;
+  QAction* m_compare = nullptr;
+  QProgressBar* m_progress;
   QLabel* m_frameTime;
   QLabel* m_rendererLabel;
   QString m_lastFolder;

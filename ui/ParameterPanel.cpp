@@ -8,10 +8,13 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
+
+#include <map>
 
 namespace relief::ui {
 ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
@@ -20,6 +23,7 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
   auto* form = new QFormLayout;
   form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
   outer->addLayout(form);
+  std::map<std::string_view, QFormLayout*> groups;
 
   for (core::Technique technique : core::allTechniques()) {
     m_technique->addItem(toQString(core::techniqueLabel(technique)),
@@ -31,14 +35,23 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
     m_document->setTechnique(core::allTechniques()[std::size_t(index)]);
   });
 
+  // One box per group, in the table's order.
   for (const core::ParameterSpec& spec : core::allParameters()) {
+    QFormLayout*& group = groups[spec.group];
+    if (!group) {
+      auto* box = new QGroupBox(toQString(spec.group));
+      group = new QFormLayout(box);
+      group->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+      outer->addWidget(box);
+    }
     QWidget* editor = createEditor(spec);
     editor->setObjectName(toQString(spec.name));
     editor->setToolTip(toQString(core::describeParameter(spec)));
     m_editors[std::size_t(spec.id)] = editor;
     auto* label = new QLabel(toQString(spec.label));
     label->setToolTip(editor->toolTip());
-    form->addRow(label, editor);
+    m_labels[std::size_t(spec.id)] = label;
+    group->addRow(label, editor);
   }
 
   auto* resetButton = new QPushButton(tr("Reset to defaults"));
@@ -84,6 +97,8 @@ QWidget* ParameterPanel::createEditor(const core::ParameterSpec& spec) {
 }
 
 void ParameterPanel::showValue(core::ParamId id) {
+  if (id == core::ParamId::ShadowMode)
+    updateRelevance();
   const double value = m_document->material().parameter(id);
   QWidget* editor = m_editors[std::size_t(id)];
   if (auto* slider = qobject_cast<ParameterSlider*>(editor)) {
@@ -104,6 +119,38 @@ void ParameterPanel::showAll() {
   }
   for (const core::ParameterSpec& spec : core::allParameters())
     showValue(spec.id);
+  updateRelevance();
+}
+
+void ParameterPanel::updateRelevance() {
+  using core::ParamId;
+  const core::Material& material = m_document->material();
+  const core::Technique technique = material.technique();
+  const bool marching = core::isMarchingTechnique(technique);
+  const auto shadowMode = core::ShadowMode(int(material.parameter(ParamId::ShadowMode)));
+  const bool shadows = shadowMode != core::ShadowMode::Off;
+  const auto relevant = [&](ParamId id) {
+    switch (id) {
+      case ParamId::MinSamples:
+      case ParamId::MaxSamples:
+        return marching;
+      case ParamId::RefinementSteps:
+        return technique == core::Technique::Relief;
+      case ParamId::ShadowStrength:
+      case ParamId::ShadowSamples:
+      case ParamId::ShadowLimit:
+        return shadows;
+      case ParamId::ShadowSoftness:
+        return shadowMode == core::ShadowMode::Soft;
+      default:
+        return true;
+    }
+  };
+  for (const core::ParameterSpec& spec : core::allParameters()) {
+    const bool on = relevant(spec.id);
+    m_editors[std::size_t(spec.id)]->setEnabled(on);
+    m_labels[std::size_t(spec.id)]->setEnabled(on);
+  }
 }
 
 }  // namespace relief::ui

@@ -29,10 +29,13 @@ class ParameterPanel : public QWidget {
   QWidget* createEditor(const core::ParameterSpec& spec);
   void showValue(core::ParamId id);
   void showAll();
+  // Greys out what the current technique and shadow mode do not use (the tooltip says why).
+  void updateRelevance();
 
   MaterialDocument* m_document;
   QComboBox* m_technique;
   std::array<QWidget*, core::kParamCount> m_editors{};
+  std::array<QWidget*, core::kParamCount> m_labels{};
   int m_currentDrag = 0;
 };
 

@@ -2,19 +2,42 @@
 #include "ui/ViewportWidget.h"
 
 #include "core/MeshPrimitives.h"
+#include "renderer/ErrorView.h"
+#include "renderer/HeatmapLegend.h"
 #include "renderer/MaterialRenderer.h"
 #include "ui/MaterialDocument.h"
+#include "ui/QtText.h"
 
 #include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QPainter>
 #include <QWheelEvent>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
 
 namespace relief::ui {
+namespace {
+
+// The error view's colour scale: errors of a quarter texel and more are red.
+constexpr double kErrorDisplayTexels = 0.25;
+
+QImage toQImage(const core::Image& rgba) {
+  QImage image(rgba.width(), rgba.height(), QImage::Format_RGBA8888);
+  for (int y = 0; y < rgba.height(); ++y) {
+    uchar* line = image.scanLine(y);
+    const float* source = rgba.pixel(0, y);
+    for (int i = 0; i < rgba.width() * 4; ++i) {
+      line[i] = uchar(std::lround(std::clamp(source[i], 0.0f, 1.0f) * 255.0f));
+    }
+  }
+  return image;
+}
+
+}  // namespace
 
 ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
     : QOpenGLWidget(parent), m_document(document), m_mesh(core::makePlane()) {
@@ -25,19 +48,28 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
          "Ctrl+drag: move the light\n"
          "Middle-drag or Shift+drag: pan\n"
          "Right-drag or wheel: zoom\n"
+         "Drag the divider: move the A/B split\n"
          "F: frame the mesh"));
-  auto materialTouched = [this] {
-    m_materialDirty = true;
-    update();
-  };
+  auto materialTouched = [this] { changed(); };
   connect(document, &MaterialDocument::parameterChanged, this, materialTouched);
   connect(document, &MaterialDocument::techniqueChanged, this, materialTouched);
   connect(document, &MaterialDocument::mapChanged, this, materialTouched);
   connect(document, &MaterialDocument::materialReset, this, materialTouched);
+  connect(&m_errorWatcher, &QFutureWatcher<core::UvErrorMap>::finished, this, [this] {
+    if (m_errorWatcher.isCanceled() || m_errorCancel->load())
+      return;
+    m_errorMap = m_errorWatcher.result();
+    m_errorImage = toQImage(core::colorizeErrorMap(*m_errorMap, kErrorDisplayTexels));
+    Q_EMIT errorViewProgress(0, 0);
+    Q_EMIT errorViewFinished(m_errorMap->mean, m_errorMap->p95, m_errorMap->maximum);
+    update();
+  });
 }
 
 ViewportWidget::~ViewportWidget() {
-  // The context is still alive here; free GL objects while it is current.
+  if (m_errorCancel)
+    m_errorCancel->store(true);
+  m_errorWatcher.waitForFinished();
   if (context()) {
     // Our slot on aboutToBeDestroyed must not run on a half-destroyed widget.
     disconnect(context(), nullptr, this, nullptr);
@@ -47,23 +79,71 @@ ViewportWidget::~ViewportWidget() {
   }
 }
 
-void ViewportWidget::setView(const renderer::RenderView& view) {
-  m_view = view;
+void ViewportWidget::changed() {
+  m_errorStale = true;
   update();
+}
+
+void ViewportWidget::setView(const renderer::RenderView& view) {
+  m_frame.view = view;
+  changed();
+}
+
+void ViewportWidget::setLight(const core::DirectionalLight& light) {
+  m_frame.view.light = light;
+  changed();
 }
 
 void ViewportWidget::setMesh(core::Mesh mesh) {
   m_mesh = std::move(mesh);
   m_meshDirty = true;
   m_framePending = true;
-  update();
+  changed();
 }
 
 void ViewportWidget::frameMesh() {
   const float aspect =
       height() > 0 ? float(width()) / float(height()) : core::OrbitCamera::kDefaultAspect;
-  m_view.camera.frame(m_mesh.bounds(), aspect);
+  m_frame.view.camera.frame(m_mesh.bounds(), aspect);
+  changed();
+}
+
+void ViewportWidget::setDebugView(core::DebugView view) {
+  m_frame.debugView = view;
+  m_errorMap.reset();
+  m_errorImage = {};
+  changed();
+}
+
+void ViewportWidget::setComparing(bool on) {
+  if (on == isComparing())
+    return;
+  if (on) {
+    m_frame.split = renderer::SplitComparison{m_document->material(), m_dividerFraction};
+  } else {
+    m_frame.split.reset();
+  }
+  changed();
+}
+
+void ViewportWidget::holdCurrentAsComparison() {
+  m_frame.split = renderer::SplitComparison{m_document->material(), m_dividerFraction};
+  changed();
+}
+
+const core::Material* ViewportWidget::comparisonMaterial() const {
+  return m_frame.split ? &m_frame.split->material : nullptr;
+}
+
+void ViewportWidget::setDividerFraction(float fraction) {
+  m_dividerFraction = std::clamp(fraction, 0.0f, 1.0f);
+  if (m_frame.split)
+    m_frame.split->dividerFraction = m_dividerFraction;
   update();
+}
+
+int ViewportWidget::dividerX() const {
+  return int(std::lround(m_dividerFraction * width()));
 }
 
 void ViewportWidget::releaseGlBeforeContextLoss() {
@@ -92,7 +172,6 @@ void ViewportWidget::initializeGL() {
     return;
   }
   m_meshDirty = true;
-  m_materialDirty = true;
   Q_EMIT rendererReady(QString::fromStdString(m_renderer->rendererDescription()));
 }
 
@@ -107,31 +186,121 @@ void ViewportWidget::paintGL() {
   timer.start();
   if (m_framePending) {
     // Framing needs the real aspect ratio, which is only known once the widget has a size.
-    frameMesh();
+    const float aspect = float(width()) / float(std::max(height(), 1));
+    m_frame.view.camera.frame(m_mesh.bounds(), aspect);
     m_framePending = false;
   }
   if (m_meshDirty) {
     m_renderer->setMesh(m_mesh);
     m_meshDirty = false;
   }
-  if (m_materialDirty) {
-    m_renderer->setMaterial(m_document->material());
-    m_materialDirty = false;
-  }
+  m_renderer->setMaterial(m_document->material());
   const qreal ratio = devicePixelRatioF();
-  m_renderer->render(m_view, int(std::lround(width() * ratio)), int(std::lround(height() * ratio)),
-                     defaultFramebufferObject());
+  const int pixelWidth = int(std::lround(width() * ratio));
+  const int pixelHeight = int(std::lround(height() * ratio));
+  if (m_frame.debugView == core::DebugView::Error && m_errorStale) {
+    startErrorView(pixelWidth, pixelHeight);
+  }
+  renderer::FrameSettings frame = m_frame;
+  if (frame.debugView == core::DebugView::Error)
+    frame.debugView = core::DebugView::Shading;
+  if (core::Status status =
+          m_renderer->render(frame, pixelWidth, pixelHeight, defaultFramebufferObject());
+      !status) {
+    Q_EMIT renderError(QString::fromStdString(status.error()));
+  }
   // Waiting for the GPU makes the status-bar number the real frame cost. The viewport only
   // draws on demand, so the stall never costs an animation frame.
   context()->functions()->glFinish();
-  Q_EMIT frameRendered(double(timer.nsecsElapsed()) / 1.0e6);
+  const double milliseconds = double(timer.nsecsElapsed()) / 1.0e6;
+  paintOverlays();
+  Q_EMIT frameRendered(milliseconds);
+}
+
+void ViewportWidget::startErrorView(int pixelWidth, int pixelHeight) {
+  m_errorStale = false;
+  if (m_errorCancel)
+    m_errorCancel->store(true);
+  m_errorWatcher.waitForFinished();
+  m_errorMap.reset();
+  m_errorImage = {};
+  renderer::FrameSettings frame = m_frame;
+  auto inputs = renderer::renderErrorViewInputs(*m_renderer, frame, pixelWidth, pixelHeight);
+  if (!inputs) {
+    Q_EMIT renderError(QString::fromStdString(inputs.error()));
+    return;
+  }
+  m_errorCancel = std::make_shared<std::atomic<bool>>(false);
+  auto cancel = m_errorCancel;
+  QPointer<ViewportWidget> self(this);
+  m_errorWatcher.setFuture(QtConcurrent::run(
+      [self, cancel,
+       inputs = std::make_shared<renderer::ErrorViewInputs>(std::move(inputs).value())]() {
+        return core::computeUvErrorMap(
+            inputs->finalUv, inputs->eyeRays, inputs->field,
+            [self, cancel](int done, int total) {
+              if (done % 16 != 0 || cancel->load())
+                return;
+              QMetaObject::invokeMethod(
+                  self,
+                  [self, done, total] {
+                    if (self)
+                      Q_EMIT self->errorViewProgress(done, total);
+                  },
+                  Qt::QueuedConnection);
+            },
+            cancel.get());
+      }));
+}
+
+void ViewportWidget::paintOverlays() {
+  const bool errorView = m_frame.debugView == core::DebugView::Error;
+  const core::Material& material = m_document->material();
+  const auto legend = renderer::legendFor(m_frame.debugView, material, kErrorDisplayTexels);
+  if (!m_frame.split && !legend && !errorView)
+    return;  // nothing drawn over the frame
+  QPainter painter(this);
+  if (errorView) {
+    if (!m_errorImage.isNull()) {
+      painter.drawImage(rect(), m_errorImage);
+    } else {
+      painter.setPen(Qt::white);
+      painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignTop | Qt::AlignLeft,
+                       tr("Tracing the exact intersections…"));
+    }
+    if (m_errorMap) {
+      painter.setPen(Qt::white);
+      painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignTop | Qt::AlignLeft,
+                       tr("UV error against the exact trace: mean %1, 95%% %2, max %3 texels")
+                           .arg(m_errorMap->mean, 0, 'f', 3)
+                           .arg(m_errorMap->p95, 0, 'f', 3)
+                           .arg(m_errorMap->maximum, 0, 'f', 2));
+    }
+  }
+  if (legend)
+    renderer::drawHeatmapLegend(painter, rect(), *legend);
+  if (m_frame.split) {
+    const int x = dividerX();
+    painter.setPen(QPen(QColor(255, 255, 255, 200), 2));
+    painter.drawLine(x, 0, x, height());
+    const auto label = [](const core::Material& m) {
+      return toQString(core::techniqueName(m.technique()));
+    };
+    painter.setPen(Qt::white);
+    painter.drawText(QRect(8, 8, std::max(x - 16, 0), 20), Qt::AlignLeft,
+                     tr("A (live): %1").arg(label(material)));
+    painter.drawText(QRect(x + 8, 8, std::max(width() - x - 16, 0), 20), Qt::AlignRight,
+                     tr("B (held): %1").arg(label(m_frame.split->material)));
+  }
 }
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   m_lastPos = event->position().toPoint();
   const Qt::KeyboardModifiers modifiers = event->modifiers();
   if (event->button() == Qt::LeftButton) {
-    if (modifiers & Qt::ControlModifier) {
+    if (m_frame.split && std::abs(m_lastPos.x() - dividerX()) <= kDividerGrabPixels) {
+      m_drag = DragMode::Divider;
+    } else if (modifiers & Qt::ControlModifier) {
       m_drag = DragMode::Light;
     } else if (modifiers & Qt::ShiftModifier) {
       m_drag = DragMode::Pan;
@@ -148,16 +317,21 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   const QPoint pos = event->position().toPoint();
+  if (m_drag == DragMode::None && m_frame.split) {
+    const bool nearDivider = std::abs(pos.x() - dividerX()) <= kDividerGrabPixels;
+    setCursor(nearDivider ? Qt::SplitHCursor : Qt::ArrowCursor);
+  }
   const QPoint delta = pos - m_lastPos;
   m_lastPos = pos;
   const float dx = float(delta.x());
   const float dy = float(delta.y());
+  core::OrbitCamera& camera = m_frame.view.camera;
   switch (m_drag) {
     case DragMode::Orbit:
-      m_view.camera.orbit(-dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel);
+      camera.orbit(-dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel);
       break;
     case DragMode::Light: {
-      core::DirectionalLight& light = m_view.light;
+      core::DirectionalLight& light = m_frame.view.light;
       light.azimuthDeg = std::fmod(light.azimuthDeg - dx * kOrbitDegreesPerPixel + 360.0f, 360.0f);
       light.elevationDeg =
           std::clamp(light.elevationDeg - dy * kOrbitDegreesPerPixel, -89.0f, 89.0f);
@@ -165,15 +339,18 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
       break;
     }
     case DragMode::Pan:
-      m_view.camera.pan(dx / float(std::max(height(), 1)), dy / float(std::max(height(), 1)));
+      camera.pan(dx / float(std::max(height(), 1)), dy / float(std::max(height(), 1)));
       break;
     case DragMode::Zoom:
-      m_view.camera.zoom(std::exp(dy * 0.01f));
+      camera.zoom(std::exp(dy * 0.01f));
       break;
+    case DragMode::Divider:
+      setDividerFraction(float(pos.x()) / float(std::max(width(), 1)));
+      return;
     case DragMode::None:
       return;
   }
-  update();
+  changed();
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
@@ -183,8 +360,8 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
   // One wheel notch (120 units) zooms by about 12%.
-  m_view.camera.zoom(std::exp(-float(event->angleDelta().y()) / 120.0f * 0.12f));
-  update();
+  m_frame.view.camera.zoom(std::exp(-float(event->angleDelta().y()) / 120.0f * 0.12f));
+  changed();
   event->accept();
 }
 

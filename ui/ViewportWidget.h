@@ -1,15 +1,22 @@
 // ViewportWidget: the 3D view of the material. Hands its GL context to the renderer (widgets
-// never call GL themselves), turns mouse and keys into camera and light changes, and redraws
-// only when the document, the view or the size changed.
+// never call GL themselves), turns mouse and keys into camera, light and divider changes,
+// paints overlays (heat-map legends, the A/B divider, the error view) and redraws only when
+// the document, the view or the size changed.
 #pragma once
 
+#include "core/DebugView.h"
 #include "core/Mesh.h"
-#include "renderer/RenderView.h"
+#include "core/UvErrorMap.h"
+#include "renderer/FrameSettings.h"
 
+#include <QFutureWatcher>
+#include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
 
+#include <atomic>
 #include <memory>
+#include <optional>
 
 namespace relief::renderer {
 class MaterialRenderer;
@@ -26,13 +33,30 @@ class ViewportWidget : public QOpenGLWidget {
   ViewportWidget(MaterialDocument* document, QWidget* parent = nullptr);
   ~ViewportWidget() override;
 
-  const renderer::RenderView& view() const { return m_view; }
+  const renderer::RenderView& view() const { return m_frame.view; }
   void setView(const renderer::RenderView& view);
+  void setLight(const core::DirectionalLight& light);
   const core::Mesh& mesh() const { return m_mesh; }
   void setMesh(core::Mesh mesh);  // also frames the camera on it (at the next frame)
 
-  // Degrees per pixel dragged, for orbiting the camera and moving the light.
+  core::DebugView debugView() const { return m_frame.debugView; }
+  void setDebugView(core::DebugView view);
+
+  // A/B comparison: B (right of the divider) is a held copy of the material.
+  bool isComparing() const { return m_frame.split.has_value(); }
+  void setComparing(bool on);
+  void holdCurrentAsComparison();
+  const core::Material* comparisonMaterial() const;
+  float dividerFraction() const { return m_dividerFraction; }
+  void setDividerFraction(float fraction);
+
+  // The frame as the renderer gets it (for offscreen renders of exactly this view).
+  renderer::FrameSettings frameSettings() const { return m_frame; }
+  // The error view's last numbers, when it has finished.
+  const std::optional<core::UvErrorMap>& errorMap() const { return m_errorMap; }
+
   static constexpr float kOrbitDegreesPerPixel = 0.4f;
+  static constexpr int kDividerGrabPixels = 6;
 
  public Q_SLOTS:
   void frameMesh();
@@ -42,6 +66,8 @@ class ViewportWidget : public QOpenGLWidget {
   void rendererReady(const QString& description);
   void renderError(const QString& message);
   void lightChanged();
+  void errorViewProgress(int done, int total);  // total 0: finished or cancelled
+  void errorViewFinished(double meanTexels, double p95Texels, double maxTexels);
 
  protected:
   void initializeGL() override;
@@ -52,19 +78,30 @@ class ViewportWidget : public QOpenGLWidget {
   void wheelEvent(QWheelEvent* event) override;
 
  private:
-  enum class DragMode { None, Orbit, Light, Pan, Zoom };
+  enum class DragMode { None, Orbit, Light, Pan, Zoom, Divider };
   void releaseGl();
   void releaseGlBeforeContextLoss();
+  void changed();  // view, material or frame changed: redraw and drop a stale error view
+  void startErrorView(int width, int height);
+  void paintOverlays();
+  int dividerX() const;
 
   MaterialDocument* m_document;
   std::unique_ptr<renderer::MaterialRenderer> m_renderer;
-  renderer::RenderView m_view;
+  renderer::FrameSettings m_frame;
+  float m_dividerFraction = 0.5f;
   core::Mesh m_mesh;
   bool m_meshDirty = true;
   bool m_framePending = true;
-  bool m_materialDirty = true;
   DragMode m_drag = DragMode::None;
   QPoint m_lastPos;
+
+  // The error view: a CPU trace per frame, in the background.
+  QFutureWatcher<core::UvErrorMap> m_errorWatcher;
+  std::shared_ptr<std::atomic<bool>> m_errorCancel;
+  bool m_errorStale = true;
+  std::optional<core::UvErrorMap> m_errorMap;
+  QImage m_errorImage;
 };
 
 }  // namespace relief::ui

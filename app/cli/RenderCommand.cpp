@@ -5,14 +5,22 @@
 #include "CliCommon.h"
 #include "core/ImageIO.h"
 #include "core/MaterialPreset.h"
+#include "core/MeshImport.h"
 #include "core/MeshPrimitives.h"
+#include "core/UvErrorMap.h"
+#include "renderer/ErrorView.h"
+#include "renderer/HeatmapLegend.h"
 #include "renderer/OffscreenRenderer.h"
 #include "renderer/OpenGLProbe.h"
 
 #include <QFileInfo>
 #include <QGuiApplication>
+#include <QImage>
+#include <QPainter>
 #include <QRegularExpression>
 #include <QSurfaceFormat>
+
+#include <cmath>
 
 namespace relief::cli {
 namespace {
@@ -26,13 +34,27 @@ QString parameterHelp() {
   return text;
 }
 
+// The error view's colour scale in PNG output: a quarter texel and more is red.
+constexpr double kErrorDisplayTexels = 0.25;
+
+template <class Enum, class NameOf>
+QString enumNames(std::span<const Enum> values, NameOf nameOf) {
+  QStringList result;
+  for (Enum value : values) {
+    const std::string_view name = nameOf(value);
+    result << QString::fromUtf8(name.data(), qsizetype(name.size()));
+  }
+  return result.join(QStringLiteral("|"));
+}
+
 struct RenderRequest {
   core::Material material;
   core::Mesh mesh;
-  renderer::RenderView view;
+  renderer::FrameSettings frame;
   int width = 1280;
   int height = 720;
   QString outPath;
+  bool exr = false;
 };
 
 bool loadMapOption(const QCommandLineParser& parser, const QString& option, core::MapSlot slot,
@@ -50,6 +72,85 @@ bool loadMapOption(const QCommandLineParser& parser, const QString& option, core
   return true;
 }
 
+// Paints the heat-map legend of the view (if it has one) onto an 8-bit picture.
+void addLegend(core::Image& image, const RenderRequest& request) {
+  const auto legend =
+      renderer::legendFor(request.frame.debugView, request.material, kErrorDisplayTexels);
+  if (!legend)
+    return;
+  QImage picture(image.width(), image.height(), QImage::Format_RGBA8888);
+  for (int y = 0; y < image.height(); ++y) {
+    uchar* line = picture.scanLine(y);
+    for (int i = 0; i < image.width() * 4; ++i) {
+      line[i] = uchar(std::lround(std::clamp(image.pixel(0, y)[i], 0.0f, 1.0f) * 255.0f));
+    }
+  }
+  {
+    QPainter painter(&picture);
+    renderer::drawHeatmapLegend(painter, picture.rect(), *legend);
+  }
+  for (int y = 0; y < image.height(); ++y) {
+    const uchar* line = picture.constScanLine(y);
+    for (int i = 0; i < image.width() * 4; ++i)
+      image.pixel(0, y)[i] = float(line[i]) / 255.0f;
+  }
+}
+
+// The requested view: 8-bit display colours with a legend, or for EXR the raw values of data
+// views (linear colour for the others).
+core::Result<core::Image> renderView(renderer::OffscreenRenderer& offscreen,
+                                     const RenderRequest& request) {
+  renderer::FrameSettings frame = request.frame;
+  const bool raw = request.exr && core::isDataView(frame.debugView);
+  frame.output = raw ? renderer::FrameOutput::FloatData : renderer::FrameOutput::Display;
+  core::Result<core::Image> image = offscreen.render(frame, request.width, request.height);
+  if (!image || raw)
+    return image;
+  if (request.exr) {
+    for (std::size_t i = 0; i < image->valueCount(); ++i) {
+      if (i % 4 != 3)
+        image->data()[i] = core::srgbToLinear(image->data()[i]);
+    }
+    image->setColorSpace(core::ColorSpace::Linear);
+    return image;
+  }
+  addLegend(image.value(), request);
+  return image;
+}
+
+// The error view: the exact tracer against this frame's UVs. Prints the statistics; writes the
+// heat map (PNG, with legend) or the error in texels (EXR, 1 channel, -1 where empty).
+core::Result<core::Image> renderErrorView(renderer::OffscreenRenderer& offscreen,
+                                          const RenderRequest& request) {
+  auto inputs = offscreen.renderErrorViewInputs(request.frame, request.width, request.height);
+  if (!inputs)
+    return core::makeError(inputs.error());
+  const core::UvErrorMap map =
+      core::computeUvErrorMap(inputs->finalUv, inputs->eyeRays, inputs->field);
+  printOut(QStringLiteral("UV error against the exact trace: mean %1, 95th percentile %2, max %3 "
+                          "texels over %4 pixels\n")
+               .arg(map.mean, 0, 'f', 4)
+               .arg(map.p95, 0, 'f', 4)
+               .arg(map.maximum, 0, 'f', 4)
+               .arg(map.pixels));
+  if (request.exr)
+    return map.texels;
+  core::Image colors = core::colorizeErrorMap(map, kErrorDisplayTexels);
+  // Uncovered pixels get the background of a normal render, so the picture reads as a frame.
+  core::Result<core::Image> background =
+      offscreen.render(request.frame.view, request.width, request.height);
+  if (background) {
+    for (std::size_t p = 0; p < colors.pixelCount(); ++p) {
+      if (colors.data()[p * 4 + 3] == 0.0f) {
+        for (int c = 0; c < 4; ++c)
+          colors.data()[p * 4 + c] = background->data()[p * 4 + c];
+      }
+    }
+  }
+  addLegend(colors, request);
+  return colors;
+}
+
 // Fills `request` from the command line; returns an exit code on failure.
 std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest& request) {
   const QStringList positional = parser.positionalArguments();
@@ -63,11 +164,25 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   }
   request.outPath = parser.value(QStringLiteral("out"));
   const QString outSuffix = QFileInfo(request.outPath).suffix().toLower();
-  static const QStringList kOutSuffixes = {QStringLiteral("png"),  QStringLiteral("jpg"),
-                                           QStringLiteral("jpeg"), QStringLiteral("tga"),
-                                           QStringLiteral("tif"),  QStringLiteral("tiff")};
-  if (!kOutSuffixes.contains(outSuffix)) {
-    printError(QStringLiteral("--out %1: the image type must be one of png, jpg, tga, tif")
+  const QString format =
+      parser.isSet(QStringLiteral("format"))
+          ? parser.value(QStringLiteral("format")).toLower()
+          : (outSuffix == QStringLiteral("exr") ? QStringLiteral("exr") : QStringLiteral("png"));
+  if (format != QStringLiteral("png") && format != QStringLiteral("exr")) {
+    printError(QStringLiteral("--format %1: expected png or exr").arg(format));
+    return kExitUsage;
+  }
+  request.exr = format == QStringLiteral("exr");
+  static const QStringList k8BitSuffixes = {QStringLiteral("png"),  QStringLiteral("jpg"),
+                                            QStringLiteral("jpeg"), QStringLiteral("tga"),
+                                            QStringLiteral("tif"),  QStringLiteral("tiff")};
+  if (request.exr && outSuffix != QStringLiteral("exr")) {
+    printError(QStringLiteral("--out %1: --format exr writes an .exr file").arg(request.outPath));
+    return kExitUsage;
+  }
+  if (!request.exr && !k8BitSuffixes.contains(outSuffix)) {
+    printError(QStringLiteral("--out %1: the image type must be one of png, jpg, tga, tif (or "
+                              "exr with --format exr)")
                    .arg(request.outPath));
     return kExitUsage;
   }
@@ -123,14 +238,40 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     request.material.setParameter(*id, value.value());
   }
 
-  const QString meshName = parser.value(QStringLiteral("mesh"));
-  const std::optional<core::PrimitiveShape> shape =
-      core::findPrimitiveShape(meshName.toStdString());
-  if (!shape) {
-    printError(QStringLiteral("--mesh %1: expected plane, cube or sphere").arg(meshName));
+  if (parser.isSet(QStringLiteral("technique"))) {
+    const QString name = parser.value(QStringLiteral("technique"));
+    const std::optional<core::Technique> technique = core::findTechnique(name.toStdString());
+    if (!technique) {
+      printError(QStringLiteral("--technique %1: expected one of %2")
+                     .arg(name, enumNames(core::allTechniques(), core::techniqueName)));
+      return kExitUsage;
+    }
+    request.material.setTechnique(*technique);
+  }
+  const QString viewName = parser.value(QStringLiteral("view"));
+  const std::optional<core::DebugView> view = core::findDebugView(viewName.toStdString());
+  if (!view) {
+    printError(QStringLiteral("--view %1: expected one of %2")
+                   .arg(viewName, enumNames(core::allDebugViews(), core::debugViewName)));
     return kExitUsage;
   }
-  request.mesh = core::makePrimitive(*shape);
+  request.frame.debugView = *view;
+
+  const QString meshName = parser.value(QStringLiteral("mesh"));
+  if (const auto shape = core::findPrimitiveShape(meshName.toStdString())) {
+    request.mesh = core::makePrimitive(*shape);
+  } else if (QFileInfo(meshName).suffix().isEmpty() && !QFileInfo::exists(meshName)) {
+    printError(QStringLiteral("--mesh %1: expected %2, or a mesh file")
+                   .arg(meshName, enumNames(core::allPrimitiveShapes(), core::primitiveShapeName)));
+    return kExitUsage;
+  } else {
+    core::Result<core::ImportedMesh> imported = core::importMesh(meshName.toStdString());
+    if (!imported) {
+      printError(QString::fromStdString(imported.error()));
+      return kExitFailure;
+    }
+    request.mesh = std::move(imported->mesh);
+  }
 
   static const QRegularExpression sizePattern(QStringLiteral("^(\\d{1,5})x(\\d{1,5})$"));
   const QRegularExpressionMatch size = sizePattern.match(parser.value(QStringLiteral("size")));
@@ -141,8 +282,8 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   }
   request.width = size.captured(1).toInt();
   request.height = size.captured(2).toInt();
-  core::OrbitCamera& camera = request.view.camera;
-  core::DirectionalLight& light = request.view.light;
+  core::OrbitCamera& camera = request.frame.view.camera;
+  core::DirectionalLight& light = request.frame.view.light;
   const auto yaw = numberOption(parser, QStringLiteral("yaw"), camera.yawDeg);
   const auto pitch = numberOption(parser, QStringLiteral("pitch"), camera.pitchDeg);
   const auto distance = numberOption(parser, QStringLiteral("distance"), 0.0);
@@ -185,7 +326,7 @@ int runRender(int argc, char* argv[]) {
                                 const QString& valueName = {}, const QString& fallback = {}) {
     parser.addOption(QCommandLineOption(name, description, valueName, fallback));
   };
-  option(QStringLiteral("out"), QStringLiteral("Output image (png, jpg, tga, tif)."),
+  option(QStringLiteral("out"), QStringLiteral("Output image (png, jpg, tga, tif, or exr)."),
          QStringLiteral("file"));
   option(QStringLiteral("size"), QStringLiteral("Image size in pixels (default 1280x720)."),
          QStringLiteral("WxH"), QStringLiteral("1280x720"));
@@ -208,8 +349,25 @@ int runRender(int argc, char* argv[]) {
   option(QStringLiteral("height"), QStringLiteral("Height map."), QStringLiteral("file"));
   option(QStringLiteral("ao"), QStringLiteral("Ambient occlusion map."), QStringLiteral("file"));
   option(QStringLiteral("roughness"), QStringLiteral("Roughness map."), QStringLiteral("file"));
-  option(QStringLiteral("mesh"), QStringLiteral("plane, cube or sphere (default plane)."),
-         QStringLiteral("name"), QStringLiteral("plane"));
+  option(QStringLiteral("mesh"),
+         QStringLiteral("plane, cube, sphere, cylinder, torus, or a mesh file (OBJ, FBX, glTF, "
+                        "...; default plane)."),
+         QStringLiteral("name|file"), QStringLiteral("plane"));
+  option(QStringLiteral("technique"),
+         QStringLiteral("Overrides the preset's technique: ") +
+             enumNames(core::allTechniques(), core::techniqueName) + QLatin1Char('.'),
+         QStringLiteral("name"));
+  option(QStringLiteral("view"),
+         QStringLiteral("What to render: ") +
+             enumNames(core::allDebugViews(), core::debugViewName) +
+             QStringLiteral(" (default shading). error prints the UV error against the exact "
+                            "trace."),
+         QStringLiteral("name"), QStringLiteral("shading"));
+  option(
+      QStringLiteral("format"),
+      QStringLiteral("png (8-bit colours, legends on heat maps) or exr (float: raw values of "
+                     "data views such as uv, offset, steps, depth, error). Default: from --out."),
+      QStringLiteral("png|exr"));
   if (auto exit = parseOrExit(parser, arguments,
                               QStringLiteral("relief-cli render [preset.relief] --out FILE "
                                              "[options]"))) {
@@ -234,14 +392,17 @@ int runRender(int argc, char* argv[]) {
   }
   offscreen.value()->setMesh(request.mesh);
   offscreen.value()->setMaterial(request.material);
-  core::Result<core::Image> image =
-      offscreen.value()->render(request.view, request.width, request.height);
+  core::Result<core::Image> image = request.frame.debugView == core::DebugView::Error
+                                        ? renderErrorView(*offscreen.value(), request)
+                                        : renderView(*offscreen.value(), request);
   if (!image) {
     printError(QStringLiteral("render: ") + QString::fromStdString(image.error()));
     return kExitFailure;
   }
+  const core::SampleFormat sampleFormat =
+      request.exr ? core::SampleFormat::Float : core::SampleFormat::UInt8;
   if (core::Status saved =
-          core::saveImage(image.value(), request.outPath.toStdString(), core::SampleFormat::UInt8);
+          core::saveImage(image.value(), request.outPath.toStdString(), sampleFormat);
       !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;

@@ -1,5 +1,5 @@
 // Blinn-Phong in tangent space (reference 004): I = sat(N.L) * diffuse + sat(N.H)^n * specular,
-// plus an ambient term scaled by the AO map.
+// plus an ambient term scaled by the AO map. Self-shadowing scales the direct light.
 
 struct SurfaceSample {
   vec3 normal;      // tangent space, unit
@@ -8,7 +8,7 @@ struct SurfaceSample {
   float roughness;  // 0 = the material's shininess, 1 = matte
 };
 
-vec3 shadeBlinnPhong(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent) {
+vec3 shadeBlinnPhong(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent, float shadow) {
   vec3 l = normalize(lightTangent);
   vec3 v = normalize(viewTangent);
   vec3 h = normalize(l + v);
@@ -20,7 +20,8 @@ vec3 shadeBlinnPhong(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent)
   float exponent = max(1.0, uShininess * (1.0 - surface.roughness) * (1.0 - surface.roughness));
   float specular = uSpecular * (1.0 - surface.roughness) *
                    pow(max(dot(surface.normal, h), 0.0), exponent) * step(0.0, nDotL);
-  vec3 direct = (surface.albedo * nDotL + vec3(specular)) * uLightColor * horizon;
+  float lit = horizon * (1.0 - uShadowStrength * shadow);
+  vec3 direct = (surface.albedo * nDotL + vec3(specular)) * uLightColor * lit;
   vec3 ambient = surface.albedo * uAmbient * surface.occlusion;
   return direct + ambient;
 }

@@ -1,11 +1,27 @@
 // Uniforms shared by every material shader: maps, material parameters, camera and light.
-// Names mirror core's parameter names (core/Parameters.h) with a "u" prefix.
+// Names mirror core's parameter names (core/Parameters.h) with a "u" prefix. Switches that
+// change the code (technique, shadow mode, UV edge, depth offset, packed height, debug view)
+// are #defines prepended by the renderer instead (renderer/ShaderVariant.cpp).
 
 uniform sampler2D uColorMap;
 uniform sampler2D uNormalMap;
 uniform sampler2D uHeightMap;
 uniform sampler2D uOcclusionMap;
 uniform sampler2D uRoughnessMap;
+uniform vec2 uHeightMapSize;    // texels, for views measured in texels
+
+uniform float uHeightScale;     // UV units spanned by heights 0..1
+uniform float uHeightBias;      // UV units; -uHeightScale puts the top on the surface
+uniform bool uHeightIsDepth;    // the height map stores depth (white = deepest)
+uniform int uMinSamples;        // view-ray samples looking straight on (reference 001)
+uniform int uMaxSamples;        // view-ray samples at grazing angles
+uniform int uRefinementSteps;   // relief mapping's binary search steps
+uniform float uLodFade;         // mip level where the relief has faded out; 0 = never
+
+uniform float uShadowStrength;  // 0..1
+uniform int uShadowSamples;     // samples toward the light
+uniform float uShadowSoftness;  // angular diameter of the light, radians
+uniform bool uShadowLimit;      // Welsh's limit on the light ray (reference 003, 1.3)
 
 uniform float uTiling;          // repeats across the mesh UV range
 uniform float uNormalStrength;  // factor on the normal's tangent-plane tilt
@@ -14,6 +30,8 @@ uniform float uSpecular;        // highlight strength
 uniform float uShininess;       // Blinn-Phong exponent
 
 uniform vec3 uCameraPosition;   // world space
+uniform mat4 uViewProjection;
 uniform vec3 uLightDirection;   // world space, unit, toward the light
 uniform vec3 uLightColor;       // linear RGB times intensity
 uniform float uAmbient;         // fraction of the albedo lit without direction
+uniform vec2 uDepthDisplayRange;  // world distances mapped to black..white in the depth view

@@ -10,6 +10,6 @@ vec3 decodeNormal(vec3 encoded) {
   return normalize(n);
 }
 
-vec3 sampleNormalMap(vec2 uv) {
-  return decodeNormal(texture(uNormalMap, uv).rgb);
+vec3 sampleNormalMap(vec2 uv, vec2 dx, vec2 dy) {
+  return decodeNormal(textureGrad(uNormalMap, uv, dx, dy).rgb);
 }

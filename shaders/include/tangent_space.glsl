@@ -10,7 +10,8 @@ struct TangentFrame {
 TangentFrame buildTangentFrame(vec3 worldNormal, vec4 worldTangent, bool frontFacing) {
   TangentFrame frame;
   frame.normal = normalize(worldNormal);
-  frame.tangent = normalize(worldTangent.xyz - dot(worldTangent.xyz, frame.normal) * frame.normal);
+  vec3 t = worldTangent.xyz - dot(worldTangent.xyz, frame.normal) * frame.normal;
+  frame.tangent = dot(t, t) > 1e-20 ? normalize(t) : vec3(1.0, 0.0, 0.0);
   frame.bitangent = cross(frame.normal, frame.tangent) * worldTangent.w;
   // Seen from behind (an open mesh such as the plane), light the side that faces the viewer.
   if (!frontFacing) frame.normal = -frame.normal;

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
 namespace relief::test {
@@ -42,6 +44,11 @@ CliRun runCli(const QStringList& arguments,
 
 QString q(const std::string& text) {
   return QString::fromStdString(text);
+}
+
+int readImageBits(const std::string& path) {
+  core::Result<core::ImageFileInfo> info = core::readImageInfo(path);
+  return info.ok() ? info->bitsPerChannel : 0;
 }
 
 void writeBytes(const std::string& path, const std::string& bytes) {
@@ -203,6 +210,78 @@ TEST(Cli, RenderRejectsBadOptionsWithUsageErrors) {
     EXPECT_NE(run.exitCode, 0) << arguments.join(QLatin1Char(' ')).toStdString();
     EXPECT_NE(run.err.find(mention), std::string::npos)
         << arguments.join(QLatin1Char(' ')).toStdString() << "\nstderr: " << run.err;
+  }
+}
+
+TEST(Cli, RenderTakesTechniqueViewMeshAndFormat) {
+  const std::string folder = scratchFolder();
+  // An OBJ quad: --mesh takes files as well as the primitives' names.
+  std::ofstream(folder + "/quad.obj") << "v -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\n"
+                                         "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 1 0\n"
+                                         "f 1/1/1 2/2/1 3/3/1 4/4/1\n";
+  const std::string steps = folder + "/steps.png";
+  CliRun run = runCli({QStringLiteral("render"), q(samplePreset("cobblestones")),
+                       QStringLiteral("--technique"), QStringLiteral("relief"),
+                       QStringLiteral("--view"), QStringLiteral("steps"), QStringLiteral("--mesh"),
+                       q(folder + "/quad.obj"), QStringLiteral("--size"), QStringLiteral("200x120"),
+                       QStringLiteral("--out"), q(steps)});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_TRUE(core::loadImage(steps).ok());
+
+  // The float UV: values a PNG could not hold (not multiples of 1/255, beyond 1 with tiling).
+  const std::string uv = folder + "/uv.exr";
+  run =
+      runCli({QStringLiteral("render"), q(samplePreset("cobblestones")), QStringLiteral("--view"),
+              QStringLiteral("uv"), QStringLiteral("--format"), QStringLiteral("exr"),
+              QStringLiteral("--size"), QStringLiteral("160x100"), QStringLiteral("--out"), q(uv)});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  core::Result<core::Image> image = core::loadImage(uv);
+  ASSERT_TRUE(image.ok()) << image.error();
+  EXPECT_EQ(readImageBits(uv), 32);
+  float largest = 0.0f;
+  bool offGrid = false;
+  for (int y = 0; y < image->height(); ++y) {
+    for (int x = 0; x < image->width(); ++x) {
+      if (image->at(x, y, 3) <= 0.0f)
+        continue;
+      const float u = image->at(x, y, 0);
+      largest = std::max(largest, u);
+      offGrid = offGrid || std::abs(u * 255.0f - std::round(u * 255.0f)) > 0.01f;
+    }
+  }
+  EXPECT_GT(largest, 1.2f);  // the sample tiles twice
+  EXPECT_LE(largest, 2.2f);
+  EXPECT_TRUE(offGrid);
+}
+
+TEST(Cli, ErrorViewPrintsTheErrorAgainstTheExactTrace) {
+  const std::string out = scratchFolder() + "/error.png";
+  CliRun run = runCli({QStringLiteral("render"), q(samplePreset("tiles")), QStringLiteral("--view"),
+                       QStringLiteral("error"), QStringLiteral("--size"), QStringLiteral("160x100"),
+                       QStringLiteral("--out"), q(out)});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("UV error against the exact trace: mean"), std::string::npos) << run.out;
+  EXPECT_TRUE(core::loadImage(out).ok());
+}
+
+TEST(Cli, RenderRefusesBadTechniquesViewsAndMeshes) {
+  const std::string folder = scratchFolder();
+  std::ofstream(folder + "/nouv.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const QString preset = q(samplePreset("bricks"));
+  const QString out = q(folder + "/x.png");
+  const std::vector<std::pair<QStringList, std::string>> cases = {
+      {{QStringLiteral("--technique"), QStringLiteral("warp")}, "pom"},
+      {{QStringLiteral("--view"), QStringLiteral("xray")}, "steps"},
+      {{QStringLiteral("--mesh"), q(folder + "/nouv.obj")}, "texture coordinates"},
+      {{QStringLiteral("--format"), QStringLiteral("exr")}, ".exr"},
+  };
+  for (const auto& [options, mention] : cases) {
+    CliRun run = runCli(
+        QStringList{QStringLiteral("render"), preset, QStringLiteral("--out"), out} + options);
+    EXPECT_FALSE(run.crashed);
+    EXPECT_NE(run.exitCode, 0) << options.join(QLatin1Char(' ')).toStdString();
+    EXPECT_NE(run.err.find(mention), std::string::npos)
+        << options.join(QLatin1Char(' ')).toStdString() << "\nstderr: " << run.err;
   }
 }
 

@@ -47,6 +47,27 @@ TEST_F(SampleRender, TilesOnTheCubeMatchTheBaseline) {
                               kMaxTolerance, kMeanTolerance));
 }
 
+TEST_F(SampleRender, EveryTechniqueMatchesItsBaseline) {
+  // Close and low over the cobblestones, where the techniques differ most.
+  core::Result<core::LoadedPreset> preset = core::loadPreset(samplePreset("cobblestones"));
+  ASSERT_TRUE(preset.ok()) << preset.error();
+  offscreen().setMesh(core::makePlane());
+  renderer::RenderView view;
+  view.camera.yawDeg = 10.0f;
+  view.camera.pitchDeg = 22.0f;
+  view.camera.distance = 1.0f;
+  for (core::Technique technique : core::allTechniques()) {
+    core::Material material = preset->material;
+    material.setTechnique(technique);
+    offscreen().setMaterial(material);
+    core::Result<core::Image> image = offscreen().render(view, 256, 160);
+    ASSERT_TRUE(image.ok()) << image.error();
+    EXPECT_TRUE(matchesBaseline(image.value(),
+                                "technique_" + std::string(core::techniqueName(technique)),
+                                kMaxTolerance, kMeanTolerance));
+  }
+}
+
 TEST_F(SampleRender, NormalMapChangesThePicture) {
   // Guards against a baseline that silently shows an unlit or flat surface: the sample with
   // its normal map must differ clearly from the same sample with the normal map removed.

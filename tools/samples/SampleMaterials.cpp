@@ -128,7 +128,7 @@ SampleMaterial makeBricks(int size) {
         scale(Rgb{0.32f, 0.30f, 0.27f}, 1.0f + 0.2f * fractalNoise(u, v, 96, 3, 0.5f, 31u));
     color = mix(mortarColor, brick, rise);
   });
-  sample.heightScale = 0.03f;
+  sample.heightScale = 0.03;
   sample.tiling = 2.0;
   sample.specular = 0.12;
   sample.shininess = 16.0;
@@ -170,7 +170,7 @@ SampleMaterial makeCobblestones(int size) {
       h = std::clamp(h + detail, 0.0f, 1.0f);
     }
   }
-  sample.heightScale = 0.05f;
+  sample.heightScale = 0.05;
   sample.tiling = 2.0;
   sample.specular = 0.2;
   sample.shininess = 24.0;
@@ -203,7 +203,7 @@ SampleMaterial makeTiles(int size) {
         scale(Rgb{0.20f, 0.19f, 0.18f}, 1.0f + 0.25f * fractalNoise(u, v, 128, 2, 0.5f, 79u));
     color = mix(groutColor, glaze, rise);
   });
-  sample.heightScale = 0.015f;
+  sample.heightScale = 0.015;
   sample.tiling = 2.0;
   sample.specular = 0.6;
   sample.shininess = 96.0;

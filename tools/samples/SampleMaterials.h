@@ -14,7 +14,7 @@ struct SampleMaterial {
   std::string name;
   core::Image colorLinear;    // RGB, linear light; encoded to sRGB when saved
   core::Image height;         // 1 channel, 1.0 = top surface
-  float heightScale = 0.03f;  // UV units spanned by heights 0..1
+  double heightScale = 0.03;  // UV units spanned by heights 0..1
   double tiling = 2.0;
   double specular = 0.25;
   double shininess = 32.0;

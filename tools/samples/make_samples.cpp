@@ -33,7 +33,7 @@ bool writeSample(const tools::SampleMaterial& sample, const std::filesystem::pat
   const std::string base = (folder / sample.name).string();
 
   core::NormalFromHeightOptions normalOptions;
-  normalOptions.strength = sample.heightScale * float(sample.height.width());
+  normalOptions.strength = float(sample.heightScale * sample.height.width());
   normalOptions.edge = core::EdgeMode::Wrap;
   const core::Image normal = core::normalMapFromHeight(sample.height, normalOptions);
 
@@ -51,7 +51,12 @@ bool writeSample(const tools::SampleMaterial& sample, const std::filesystem::pat
 
   core::Material material;
   material.setName(sample.name);
-  material.setTechnique(core::Technique::Normal);
+  // Parallax occlusion mapping with soft self-shadows; the relief's top on the mesh surface
+  // (heightBias = -heightScale), the depth the normal map was baked for.
+  material.setTechnique(core::Technique::Pom);
+  material.setParameter(core::ParamId::HeightScale, sample.heightScale);
+  material.setParameter(core::ParamId::HeightBias, -sample.heightScale);
+  material.setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Soft));
   material.setParameter(core::ParamId::Tiling, sample.tiling);
   material.setParameter(core::ParamId::Specular, sample.specular);
   material.setParameter(core::ParamId::Shininess, sample.shininess);
@@ -68,7 +73,7 @@ bool writeSample(const tools::SampleMaterial& sample, const std::filesystem::pat
     return false;
   }
   std::printf("wrote %s (%dx%d, heightScale %.3f)\n", base.c_str(), sample.height.width(),
-              sample.height.height(), double(sample.heightScale));
+              sample.height.height(), sample.heightScale);
   return true;
 }
 

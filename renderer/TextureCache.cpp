@@ -1,5 +1,5 @@
-// MaterialTextures; see MaterialTextures.h.
-#include "renderer/MaterialTextures.h"
+// TextureCache; see TextureCache.h.
+#include "renderer/TextureCache.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,34 +113,36 @@ std::unique_ptr<QOpenGLTexture> createMapTexture(const Image& image, MapSlot slo
   return texture;
 }
 
-bool MaterialTextures::sync(const core::Material& material) {
-  bool changed = false;
-  for (MapSlot slot : core::kAllMapSlots) {
-    const auto index = std::size_t(slot);
-    const std::shared_ptr<const Image>& wanted = material.map(slot).image;
-    if (m_initialised[index] && wanted == m_sources[index])
-      continue;
-    m_textures[index] = createMapTexture(wanted ? *wanted : *neutralImage(slot), slot);
-    m_sources[index] = wanted;
-    m_initialised[index] = true;
-    changed = true;
+QOpenGLTexture& TextureCache::texture(const core::Material& material, MapSlot slot) {
+  const std::shared_ptr<const Image>& image = material.map(slot).image;
+  if (!image) {
+    std::unique_ptr<QOpenGLTexture>& neutral = m_neutral[std::size_t(slot)];
+    if (!neutral)
+      neutral = createMapTexture(*neutralImage(slot), slot);
+    return *neutral;
   }
-  return changed;
+  Entry& entry = m_uploads[Key{image.get(), slot}];
+  if (!entry.texture) {
+    entry.image = image;
+    entry.texture = createMapTexture(*image, slot);
+  }
+  return *entry.texture;
 }
 
-void MaterialTextures::bind(int firstUnit) {
-  for (std::size_t i = 0; i < m_textures.size(); ++i) {
-    if (m_textures[i])
-      m_textures[i]->bind(unsigned(firstUnit) + unsigned(i));
+void TextureCache::releaseUnused(std::initializer_list<const core::Material*> materials) {
+  for (auto it = m_uploads.begin(); it != m_uploads.end();) {
+    bool used = false;
+    for (const core::Material* material : materials) {
+      used = used || material->image(it->first.second) == it->first.first;
+    }
+    it = used ? std::next(it) : m_uploads.erase(it);
   }
 }
 
-void MaterialTextures::release() {
-  for (auto& texture : m_textures)
-    texture.reset();
-  for (auto& source : m_sources)
-    source.reset();
-  m_initialised.fill(false);
+void TextureCache::release() {
+  m_uploads.clear();
+  for (auto& neutral : m_neutral)
+    neutral.reset();
 }
 
 }  // namespace relief::renderer

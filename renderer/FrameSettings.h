@@ -1,0 +1,31 @@
+// FrameSettings: everything about one frame besides the material and the mesh: the view, the
+// debug view, what kind of values to write, and the optional A/B split comparison.
+#pragma once
+
+#include "core/DebugView.h"
+#include "core/Material.h"
+#include "renderer/RenderView.h"
+
+#include <optional>
+
+namespace relief::renderer {
+
+enum class FrameOutput {
+  Display,    // sRGB colours for the screen or an 8-bit file
+  FloatData,  // raw values of data views (EXR); background alpha 0 marks empty pixels
+  EyeRays,    // per pixel: entry texture UV (rg) and tangent-space view direction xy (ba)
+};
+
+struct SplitComparison {
+  core::Material material;       // drawn right of the divider (B); the current material is left (A)
+  float dividerFraction = 0.5f;  // 0..1 of the width, from the left
+};
+
+struct FrameSettings {
+  RenderView view;
+  core::DebugView debugView = core::DebugView::Shading;
+  FrameOutput output = FrameOutput::Display;
+  std::optional<SplitComparison> split;
+};
+
+}  // namespace relief::renderer

@@ -1,0 +1,56 @@
+// ShaderVariant; see ShaderVariant.h.
+#include "renderer/ShaderVariant.h"
+
+namespace relief::renderer {
+namespace {
+
+const char* techniqueDefine(core::Technique technique) {
+  switch (technique) {
+    case core::Technique::Normal:
+      return "TECHNIQUE_NORMAL";
+    case core::Technique::Parallax:
+      return "TECHNIQUE_PARALLAX";
+    case core::Technique::ParallaxLimited:
+      return "TECHNIQUE_PARALLAX_LIMITED";
+    case core::Technique::Steep:
+      return "TECHNIQUE_STEEP";
+    case core::Technique::Pom:
+      return "TECHNIQUE_POM";
+    case core::Technique::Relief:
+      return "TECHNIQUE_RELIEF";
+  }
+  return "TECHNIQUE_NORMAL";
+}
+
+}  // namespace
+
+std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
+                                               FrameOutput output) {
+  using core::ParamId;
+  std::vector<std::string> defines = {techniqueDefine(material.technique())};
+  const auto shadowMode = core::ShadowMode(int(material.parameter(ParamId::ShadowMode)));
+  if (shadowMode == core::ShadowMode::Hard)
+    defines.emplace_back("SHADOW_HARD");
+  if (shadowMode == core::ShadowMode::Soft)
+    defines.emplace_back("SHADOW_SOFT");
+  if (core::UvEdge(int(material.parameter(ParamId::UvEdge))) == core::UvEdge::Clamp) {
+    defines.emplace_back("UV_EDGE_CLAMP");
+  }
+  if (material.parameterFlag(ParamId::HeightInNormalAlpha)) {
+    defines.emplace_back("HEIGHT_IN_NORMAL_ALPHA");
+  }
+  if (output == FrameOutput::EyeRays) {
+    defines.emplace_back("DEBUG_VIEW VIEW_RAY");  // no depth offset: nothing is shaded
+    return defines;
+  }
+  if (material.parameterFlag(ParamId::DepthOffset))
+    defines.emplace_back("DEPTH_OFFSET");
+  // The error view is computed on the CPU from a float UV pass.
+  const core::DebugView shaderView = view == core::DebugView::Error ? core::DebugView::Uv : view;
+  defines.push_back("DEBUG_VIEW " + std::to_string(int(shaderView)));
+  if (output == FrameOutput::FloatData)
+    defines.emplace_back("FLOAT_OUTPUT");
+  return defines;
+}
+
+}  // namespace relief::renderer

@@ -1,0 +1,19 @@
+// The compile-time switches of the material shader family: one program per combination of
+// technique, shadow mode, UV edge, depth offset, packed height, debug view and output kind.
+// Everything else is a uniform, so dragging a slider never recompiles.
+#pragma once
+
+#include "core/DebugView.h"
+#include "core/Material.h"
+#include "renderer/FrameSettings.h"
+
+#include <string>
+#include <vector>
+
+namespace relief::renderer {
+
+// The #defines for material.vert/frag, in a fixed order (the list doubles as a cache key).
+std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
+                                               FrameOutput output);
+
+}  // namespace relief::renderer

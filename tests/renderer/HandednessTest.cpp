@@ -1,0 +1,73 @@
+// Mirrored UVs (reference 004's tangent.w): on a plane whose right half has u mirrored, the
+// parallax offset must point away from the viewer in world space on both halves, so it has
+// opposite signs in u and the same sign in v.
+#include "core/TangentFrames.h"
+#include "support/OffscreenFixture.h"
+
+namespace relief::test {
+namespace {
+
+using core::Image;
+
+core::Mesh mirroredPlane() {
+  core::Mesh mesh;
+  mesh.name = "mirrored";
+  auto quad = [&mesh](float x0, float x1, float u0, float u1) {
+    const auto base = std::uint32_t(mesh.vertices.size());
+    const glm::vec3 up(0, 1, 0);
+    mesh.vertices.push_back({{x0, 0, 1}, up, {u0, 0}, {}});
+    mesh.vertices.push_back({{x1, 0, 1}, up, {u1, 0}, {}});
+    mesh.vertices.push_back({{x1, 0, -1}, up, {u1, 1}, {}});
+    mesh.vertices.push_back({{x0, 0, -1}, up, {u0, 1}, {}});
+    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  };
+  quad(-1.0f, 0.0f, 0.0f, 1.0f);
+  quad(0.0f, 1.0f, 1.0f, 0.0f);  // mirrored in u
+  core::computeTangentFrames(mesh);
+  return mesh;
+}
+
+class Handedness : public OffscreenTest {};
+
+TEST_F(Handedness, ParallaxShiftsAwayFromTheViewerOnBothHalves) {
+  // A flat field sunk below the surface: every visible point lies beyond the fragment, away
+  // from the eye. Kaneko's offset is then exact, so only directions are being tested.
+  core::Material material;
+  auto floor = std::make_shared<Image>(8, 8, 1);  // all zero: the deepest level
+  material.setMap(core::MapSlot::Height, floor);
+  material.setTechnique(core::Technique::Parallax);
+  material.setParameter(core::ParamId::HeightScale, 0.05);
+  material.setParameter(core::ParamId::HeightBias, -0.05);
+  offscreen().setMesh(mirroredPlane());
+  offscreen().setMaterial(material);
+
+  renderer::FrameSettings frame;
+  frame.view.camera.yawDeg = 0.0f;  // the camera is on the +Z side, looking toward -Z
+  frame.view.camera.pitchDeg = 45.0f;
+  frame.view.camera.distance = 3.5f;
+  frame.debugView = core::DebugView::Offset;
+  frame.output = renderer::FrameOutput::FloatData;
+  auto offsets = offscreen().render(frame, 200, 120);
+  ASSERT_TRUE(offsets.ok()) << offsets.error();
+
+  // A row through the middle; one column inside each half, mirror images of each other.
+  const int y = 60;
+  const float* left = offsets->pixel(60, y);    // left half: u grows with world X
+  const float* right = offsets->pixel(140, y);  // right half: u shrinks with world X
+  ASSERT_GT(left[3], 0.0f);
+  ASSERT_GT(right[3], 0.0f);
+  // Away from the viewer is world -Z everywhere, which is +v on both halves. Kaneko's offset
+  // there is |s| tan(45 degrees) = 0.05 UV = 0.4 texels of the 8-texel map.
+  EXPECT_NEAR(left[1], 0.4f, 0.1f);
+  EXPECT_NEAR(right[1], 0.4f, 0.1f);
+  // Left of centre the eye ray also runs toward -X (world), right of centre toward +X. In
+  // texture u that is negative on the left half and, mirrored, negative on the right too.
+  EXPECT_LT(left[0], 0.0f);
+  EXPECT_LT(right[0], 0.0f);
+  // And symmetric: the two halves mirror each other.
+  EXPECT_NEAR(left[0], right[0], 0.05f * std::abs(left[0]) + 1e-3f);
+  EXPECT_NEAR(left[1], right[1], 0.05f * std::abs(left[1]) + 1e-3f);
+}
+
+}  // namespace
+}  // namespace relief::test

@@ -1,0 +1,211 @@
+// Every control of the viewport's material, light and view, driven through the real widgets:
+// each must change the next frame (checked on the grabbed framebuffer), and nothing redraws
+// when nothing changed.
+#include "core/ColorSpace.h"
+#include "support/ImageCompare.h"
+#include "support/TestPaths.h"
+#include "ui/LightPanel.h"
+#include "ui/MainWindow.h"
+#include "ui/MaterialDocument.h"
+#include "ui/ParameterPanel.h"
+#include "ui/ParameterSlider.h"
+#include "ui/ViewportWidget.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+namespace relief::test {
+namespace {
+
+using core::ParamId;
+
+core::Image grabbed(ui::ViewportWidget* viewport) {
+  const QImage rgba = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGBA8888);
+  core::Image image(rgba.width(), rgba.height(), 4, core::ColorSpace::Srgb);
+  for (int y = 0; y < rgba.height(); ++y) {
+    const uchar* line = rgba.constScanLine(y);
+    for (int x = 0; x < rgba.width() * 4; ++x)
+      image.pixel(0, y)[x] = float(line[x]) / 255.0f;
+  }
+  return image;
+}
+
+class ViewportControls : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    m_window = std::make_unique<ui::MainWindow>();
+    m_window->resize(1100, 700);
+    m_window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("cobblestones"))));
+    viewport()->setDebugView(core::DebugView::Shading);
+  }
+
+  ui::ViewportWidget* viewport() { return m_window->viewport(); }
+  ui::MaterialDocument* document() { return m_window->document(); }
+  QWidget* editor(ParamId id) { return m_window->parameterPanel()->editor(id); }
+
+  // Moves one parameter's control to another value, as a user would.
+  void changeThroughItsControl(ParamId id) {
+    const core::ParameterSpec& spec = core::parameterSpec(id);
+    QWidget* control = editor(id);
+    ASSERT_TRUE(control->isEnabled()) << spec.name << " is disabled in this set-up";
+    if (auto* slider = qobject_cast<ui::ParameterSlider*>(control)) {
+      // Counts go to an extreme (a few more samples change few pixels); values move by 30%.
+      const double current = document()->material().parameter(id);
+      double target = current < (spec.minimum + spec.maximum) / 2
+                          ? current + 0.3 * (spec.maximum - spec.minimum)
+                          : current - 0.3 * (spec.maximum - spec.minimum);
+      if (spec.kind == core::ParamKind::Int) {
+        target = current > spec.minimum ? spec.minimum : spec.maximum;
+      }
+      slider->spinBox()->setValue(target);
+    } else if (auto* check = qobject_cast<QCheckBox*>(control)) {
+      QTest::mouseClick(check, Qt::LeftButton);
+    } else if (auto* combo = qobject_cast<QComboBox*>(control)) {
+      const int next = (combo->currentIndex() + 1) % combo->count();
+      combo->setCurrentIndex(next);
+      Q_EMIT combo->activated(next);
+    }
+  }
+
+  std::unique_ptr<ui::MainWindow> m_window;
+};
+
+// The frame changed visibly somewhere. Rendering is deterministic (undo gives back the same
+// bits), so any difference is the control's effect; some act on few pixels (a shadow edge,
+// a few more samples), so no mean is required.
+::testing::AssertionResult frameChanged(const core::Image& before, const core::Image& after) {
+  const ImageDifference change = compareImages(before, after);
+  if (change.maxError > 3.0 / 255.0)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "max change " << change.maxError * 255.0 << "/255";
+}
+
+TEST_F(ViewportControls, EveryParameterChangesTheFrame) {
+  // Relief mapping with soft shadows: every parameter is in use. Close, low camera and a low
+  // light, where samples and shadows matter most.
+  document()->setTechnique(core::Technique::Relief);
+  renderer::RenderView view = viewport()->view();
+  view.camera.pitchDeg = 20.0f;
+  view.camera.distance = 0.9f;
+  view.light.elevationDeg = 15.0f;
+  viewport()->setView(view);
+  for (const core::ParameterSpec& spec : core::allParameters()) {
+    SCOPED_TRACE(std::string(spec.name));
+    // Write-displaced-depth changes only depth: watch it in the depth view.
+    viewport()->setDebugView(spec.id == ParamId::DepthOffset ? core::DebugView::Depth
+                                                             : core::DebugView::Shading);
+    const core::Image before = grabbed(viewport());
+    changeThroughItsControl(spec.id);
+    EXPECT_TRUE(frameChanged(before, grabbed(viewport())));
+    document()->undoStack()->undo();
+    EXPECT_EQ(compareImages(before, grabbed(viewport())).maxError, 0.0) << "undo restores";
+  }
+}
+
+TEST_F(ViewportControls, EveryTechniqueAndDebugViewChangesTheFrame) {
+  QComboBox* techniques = m_window->parameterPanel()->techniqueBox();
+  core::Image previous = grabbed(viewport());
+  for (int i = 1; i < techniques->count(); ++i) {
+    techniques->setCurrentIndex(i);
+    Q_EMIT techniques->activated(i);
+    const core::Image frame = grabbed(viewport());
+    EXPECT_TRUE(frameChanged(previous, frame)) << techniques->itemText(i).toStdString();
+    previous = frame;
+  }
+  QComboBox* views = m_window->debugViewBox();
+  for (int i = 1; i < views->count(); ++i) {
+    if (views->itemData(i).toString() == QStringLiteral("error"))
+      continue;  // asynchronous
+    views->setCurrentIndex(i);
+    Q_EMIT views->activated(i);
+    const core::Image frame = grabbed(viewport());
+    EXPECT_TRUE(frameChanged(previous, frame)) << views->itemText(i).toStdString();
+    previous = frame;
+  }
+}
+
+TEST_F(ViewportControls, LightControlsMoveTheLight) {
+  ui::LightPanel* light = m_window->lightPanel();
+  core::Image before = grabbed(viewport());
+  light->azimuthSlider()->setValue((light->azimuthSlider()->value() + 120) % 360);
+  core::Image after = grabbed(viewport());
+  EXPECT_TRUE(frameChanged(before, after));
+  light->elevationSlider()->setValue(light->elevationSlider()->value() + 30);
+  before = after;
+  after = grabbed(viewport());
+  EXPECT_TRUE(frameChanged(before, after));
+  light->intensityBox()->setValue(0.5);
+  before = after;
+  after = grabbed(viewport());
+  EXPECT_TRUE(frameChanged(before, after));
+  light->ambientBox()->setValue(0.5);
+  before = after;
+  after = grabbed(viewport());
+  EXPECT_TRUE(frameChanged(before, after));
+  // Ctrl+drag in the viewport moves the same light, and the panel follows.
+  const int azimuth = light->azimuthSlider()->value();
+  const QPoint centre = viewport()->rect().center();
+  QTest::mousePress(viewport(), Qt::LeftButton, Qt::ControlModifier, centre);
+  QTest::mouseMove(viewport(), centre + QPoint(60, 0));
+  QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, centre + QPoint(60, 0));
+  EXPECT_NE(light->azimuthSlider()->value(), azimuth);
+}
+
+TEST_F(ViewportControls, MeshesAndTheSplitComparisonChangeTheFrame) {
+  QComboBox* meshes = m_window->meshBox();
+  core::Image previous = grabbed(viewport());
+  for (int i = 1; i < meshes->count(); ++i) {
+    meshes->setCurrentIndex(i);
+    Q_EMIT meshes->activated(i);
+    const core::Image frame = grabbed(viewport());
+    EXPECT_TRUE(frameChanged(previous, frame)) << meshes->itemText(i).toStdString();
+    previous = frame;
+  }
+  // A/B: hold the current material as B, change A, and the two halves differ.
+  m_window->compareAction()->setChecked(true);
+  ASSERT_TRUE(viewport()->isComparing());
+  document()->setTechnique(core::Technique::Normal);
+  const core::Image split = grabbed(viewport());
+  ASSERT_NE(viewport()->comparisonMaterial(), nullptr);
+  EXPECT_EQ(viewport()->comparisonMaterial()->technique(), core::Technique::Pom);
+  // Moving the divider moves where B starts.
+  viewport()->setDividerFraction(0.2f);
+  EXPECT_TRUE(frameChanged(split, grabbed(viewport())));
+}
+
+TEST_F(ViewportControls, NothingRedrawsWhenNothingChanged) {
+  grabbed(viewport());
+  QTest::qWait(100);
+  QSignalSpy frames(viewport(), &ui::ViewportWidget::frameRendered);
+  QTest::qWait(400);
+  EXPECT_EQ(frames.count(), 0);
+  viewport()->setLight(viewport()->view().light);  // a change request: one redraw
+  QTest::qWait(200);
+  EXPECT_GE(frames.count(), 1);
+}
+
+TEST_F(ViewportControls, ErrorViewReportsTheErrorAgainstTheExactTrace) {
+  m_window->resize(500, 400);
+  QSignalSpy finished(viewport(), &ui::ViewportWidget::errorViewFinished);
+  QComboBox* views = m_window->debugViewBox();
+  const int error = views->findData(QStringLiteral("error"));
+  views->setCurrentIndex(error);
+  Q_EMIT views->activated(error);
+  viewport()->update();
+  ASSERT_TRUE(finished.wait(60000));
+  ASSERT_TRUE(viewport()->errorMap().has_value());
+  EXPECT_GT(viewport()->errorMap()->pixels, 1000);
+  EXPECT_GE(viewport()->errorMap()->mean, 0.0);
+}
+
+}  // namespace
+}  // namespace relief::test

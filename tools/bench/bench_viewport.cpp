@@ -1,0 +1,170 @@
+// bench-viewport: what each parallax technique costs. Renders 1280x720 offscreen for every
+// technique x sample count x view (head-on, 45 degrees, grazing 15 degrees) with the
+// cobblestones sample on a plane that fills the frame in every view, times draw + glFinish on the
+// CPU clock (GL timer queries report nonsense on llvmpipe; PLATFORM.md), takes the median of
+// several runs and prints each row's ratio to `normal` for the same view, measured in the same run.
+//
+// Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5]
+#include "core/MaterialPreset.h"
+#include "core/MeshPrimitives.h"
+#include "renderer/MaterialRenderer.h"
+#include "renderer/OpenGLProbe.h"
+
+#include <QGuiApplication>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QOpenGLFunctions>
+#include <QSurfaceFormat>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#ifndef RELIEF_SOURCE_DIR
+#error "RELIEF_SOURCE_DIR must point at the source tree (for the samples)"
+#endif
+
+namespace {
+
+using namespace relief;
+
+struct ViewSetup {
+  const char* name;
+  float pitchDeg;
+};
+
+struct Row {
+  std::string technique;
+  std::string samples;
+  std::string shadows;
+  double milliseconds[3];
+};
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  QSurfaceFormat::setDefaultFormat(renderer::requiredSurfaceFormat());
+  QGuiApplication application(argc, argv);
+  const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+  const int width = 1280, height = 720;
+
+  if (auto probe = renderer::probeOpenGL(); !probe) {
+    std::fprintf(stderr, "bench-viewport: %s\n", probe.error().c_str());
+    return 1;
+  }
+  QOpenGLContext context;
+  context.setFormat(renderer::requiredSurfaceFormat());
+  QOffscreenSurface surface;
+  surface.setFormat(renderer::requiredSurfaceFormat());
+  surface.create();
+  if (!context.create() || !context.makeCurrent(&surface)) {
+    std::fprintf(stderr, "bench-viewport: cannot create an OpenGL 4.1 context\n");
+    return 1;
+  }
+  auto preset = core::loadPreset(std::string(RELIEF_SOURCE_DIR) +
+                                 "/samples/cobblestones/cobblestones.relief");
+  if (!preset) {
+    std::fprintf(stderr, "bench-viewport: %s\n", preset.error().c_str());
+    return 1;
+  }
+  // A plane ten times the default, tiled ten times as often: the same texel density, and it
+  // fills the frame even at grazing angles, so every view shades the same number of pixels.
+  const core::Mesh plane = core::makePlane(20.0f);
+  core::Material base = preset->material;
+  base.setParameter(core::ParamId::Tiling, base.parameter(core::ParamId::Tiling) * 10.0);
+  base.setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Off));
+
+  renderer::MaterialRenderer materialRenderer;
+  if (auto status = materialRenderer.initialize(); !status) {
+    std::fprintf(stderr, "bench-viewport: %s\n", status.error().c_str());
+    return 1;
+  }
+  materialRenderer.setMesh(plane);
+  QOpenGLFramebufferObject fbo(width, height, QOpenGLFramebufferObject::Depth);
+  QOpenGLFunctions* gl = context.functions();
+
+  const ViewSetup views[3] = {{"head-on", 89.0f}, {"45 deg", 45.0f}, {"grazing", 15.0f}};
+  const auto timeFrame = [&](const core::Material& material, const ViewSetup& setup) {
+    materialRenderer.setMaterial(material);
+    renderer::FrameSettings frame;
+    frame.view.camera.yawDeg = 0.0f;
+    frame.view.camera.pitchDeg = setup.pitchDeg;
+    frame.view.camera.distance = 1.6f;
+    // A narrow field of view keeps each view pure: at "grazing" every pixel sees the surface
+    // between 5 and 25 degrees, instead of a spread from the horizon to 35 degrees.
+    frame.view.camera.fovYDeg = 20.0f;
+    std::vector<double> runs;
+    for (int i = 0; i <= repeats; ++i) {  // the first run compiles and uploads: not counted
+      const auto start = std::chrono::steady_clock::now();
+      (void)materialRenderer.render(frame, width, height, fbo.handle());
+      gl->glFinish();
+      const auto end = std::chrono::steady_clock::now();
+      if (i > 0)
+        runs.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+    }
+    std::nth_element(runs.begin(), runs.begin() + std::ptrdiff_t(runs.size() / 2), runs.end());
+    return runs[runs.size() / 2];
+  };
+
+  std::vector<Row> rows;
+  const auto measure = [&](const core::Material& material, std::string samples,
+                           std::string shadows) {
+    Row row{std::string(core::techniqueName(material.technique())),
+            std::move(samples),
+            std::move(shadows),
+            {}};
+    for (int v = 0; v < 3; ++v)
+      row.milliseconds[v] = timeFrame(material, views[v]);
+    rows.push_back(row);
+    std::fprintf(stderr, ".");
+  };
+  core::Material normal = base;
+  normal.setTechnique(core::Technique::Normal);
+  measure(normal, "-", "off");
+  for (core::Technique technique : core::allTechniques()) {
+    if (technique == core::Technique::Normal)
+      continue;
+    const bool marching = core::isMarchingTechnique(technique);
+    for (int most : {8, 16, 32, 64}) {
+      if (!marching && most != 8)
+        continue;  // parallax takes two samples whatever the count
+      core::Material material = base;
+      material.setTechnique(technique);
+      material.setParameter(core::ParamId::MinSamples, most / 4);
+      material.setParameter(core::ParamId::MaxSamples, most);
+      measure(material, marching ? std::to_string(most / 4) + "/" + std::to_string(most) : "-",
+              "off");
+    }
+  }
+  core::Material shadowed = base;
+  shadowed.setTechnique(core::Technique::Pom);
+  shadowed.setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Soft));
+  measure(shadowed, "8/32", "soft, 16");
+  std::fprintf(stderr, "\n");
+
+  std::printf(
+      "bench-viewport: %dx%d, cobblestones (1024^2 maps), median of %d frames, "
+      "draw + glFinish\n%s\n\n",
+      width, height, repeats, materialRenderer.rendererDescription().c_str());
+  std::printf(
+      "| technique        | samples | shadows  | head-on ms (x normal) | 45 deg ms (x normal) "
+      "| grazing ms (x normal) | head-on / grazing |\n");
+  std::printf(
+      "|------------------|---------|----------|-----------------------|---------------------"
+      "-|-----------------------|-------------------|\n");
+  for (const Row& row : rows) {
+    std::printf("| %-16s | %-7s | %-8s |", row.technique.c_str(), row.samples.c_str(),
+                row.shadows.c_str());
+    for (int v = 0; v < 3; ++v) {
+      std::printf(" %8.1f (%5.2fx)      |", row.milliseconds[v],
+                  row.milliseconds[v] / rows.front().milliseconds[v]);
+    }
+    std::printf(" %17.2f |\n", row.milliseconds[0] / row.milliseconds[2]);
+  }
+  materialRenderer.releaseResources();
+  context.doneCurrent();
+  return 0;
+}
