@@ -4,6 +4,9 @@ find_package(OpenImageIO REQUIRED CONFIG)
 find_package(glm REQUIRED)
 find_package(assimp REQUIRED)
 find_package(Threads REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
+find_library(FFTW3F_THREADS_LIBRARY fftw3f_threads REQUIRED)
 
 # Debian's OpenImageIO config lists /usr/include/opencv4 as an include directory even when
 # OpenCV's headers are absent, which makes CMake refuse to generate. Drop that entry.

@@ -213,6 +213,11 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
   if (ext == ".exr") {
     spec.attribute("compression", "zip");
   }
+  // Quantising finer data to 8 bits bands smooth gradients; OpenImageIO's dither adds noise of
+  // under half a level first. Images that came from 8-bit files stay exact.
+  if (spec.format == OIIO::TypeDesc::UINT8 && image.sourceBitsPerChannel() != 8) {
+    spec.attribute("oiio:dither", 1);
+  }
 
   // The temporary keeps the extension so that OpenImageIO's writer sees the same format.
   const fs::path target(path);

@@ -38,7 +38,8 @@ Status verifyImageData(const std::string& path);
 // Reads the first subimage as float. Images with more than four channels keep the first four.
 Result<Image> loadImage(const std::string& path);
 
-// Writes to a temporary file next to `path` and renames it over `path` on success.
+// Writes to a temporary file next to `path` and renames it over `path` on success. Writing
+// 8-bit samples from a finer source (not loaded from an 8-bit file) dithers.
 Status saveImage(const Image& image, const std::string& path,
                  SampleFormat format = SampleFormat::Auto);
 

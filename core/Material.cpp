@@ -15,7 +15,7 @@ void Material::setMap(MapSlot slot, std::shared_ptr<const Image> image, std::str
 }
 
 void Material::setParameter(ParamId id, double value) {
-  m_parameters[std::size_t(id)] = sanitizeParameterValue(parameterSpec(id), value);
+  m_parameters[std::size_t(id)] = sanitizeOptionValue(parameterSpec(id), value);
 }
 
 }  // namespace relief::core

@@ -38,7 +38,7 @@ class Material {
   double parameter(ParamId id) const { return m_parameters[std::size_t(id)]; }
   float parameterf(ParamId id) const { return float(parameter(id)); }
   bool parameterFlag(ParamId id) const { return parameter(id) != 0.0; }
-  // Clamps to the declared range (see sanitizeParameterValue).
+  // Clamps to the declared range (see sanitizeOptionValue).
   void setParameter(ParamId id, double value);
   const ParameterValues& parameters() const { return m_parameters; }
 

@@ -34,7 +34,7 @@ void readParameters(const QJsonObject& object, const std::string& path, Material
     if (it.value().isBool() && spec.kind == ParamKind::Bool) {
       value = it.value().toBool() ? 1.0 : 0.0;
     } else if (it.value().isString() && spec.kind == ParamKind::Choice) {
-      Result<double> parsed = parseParameterValue(spec, it.value().toString().toStdString());
+      Result<double> parsed = parseOptionValue(spec, it.value().toString().toStdString());
       if (!parsed) {
         warnings.push_back(path + ": " + parsed.error() + "; default kept");
         continue;
@@ -50,7 +50,7 @@ void readParameters(const QJsonObject& object, const std::string& path, Material
       warnings.push_back(path + ": parameter '" + key + "' is not a finite number; default kept");
       continue;
     }
-    const double sanitized = sanitizeParameterValue(spec, value);
+    const double sanitized = sanitizeOptionValue(spec, value);
     if (sanitized != value) {
       warnings.push_back(path + ": parameter '" + key + "' = " + std::to_string(value) +
                          " is outside its range; clamped to " + std::to_string(sanitized));

@@ -15,7 +15,7 @@ void MaterialDocument::reset(core::Material material, const QString& filePath) {
 }
 
 void MaterialDocument::setParameter(core::ParamId id, double value, int interactiveEdit) {
-  const double sanitized = core::sanitizeParameterValue(core::parameterSpec(id), value);
+  const double sanitized = core::sanitizeOptionValue(core::parameterSpec(id), value);
   if (sanitized == m_material.parameter(id))
     return;
   m_undoStack.push(

@@ -46,7 +46,7 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
     }
     QWidget* editor = createEditor(spec);
     editor->setObjectName(toQString(spec.name));
-    editor->setToolTip(toQString(core::describeParameter(spec)));
+    editor->setToolTip(toQString(core::describeOption(spec)));
     m_editors[std::size_t(spec.id)] = editor;
     auto* label = new QLabel(toQString(spec.label));
     label->setToolTip(editor->toolTip());

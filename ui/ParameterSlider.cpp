@@ -10,7 +10,7 @@
 
 namespace relief::ui {
 
-ParameterSlider::ParameterSlider(const core::ParameterSpec& spec, QWidget* parent)
+ParameterSlider::ParameterSlider(const core::OptionSpec& spec, QWidget* parent)
     : QWidget(parent),
       m_spec(spec),
       m_slider(new QSlider(Qt::Horizontal)),

@@ -16,7 +16,7 @@ class ParameterSlider : public QWidget {
   Q_OBJECT
 
  public:
-  explicit ParameterSlider(const core::ParameterSpec& spec, QWidget* parent = nullptr);
+  explicit ParameterSlider(const core::OptionSpec& spec, QWidget* parent = nullptr);
 
   double value() const;
   // Shows a value without emitting valueEdited.
@@ -36,7 +36,7 @@ class ParameterSlider : public QWidget {
   int toSlider(double value) const;
   double fromSlider(int position) const;
 
-  const core::ParameterSpec& m_spec;
+  const core::OptionSpec& m_spec;
   QSlider* m_slider;
   QDoubleSpinBox* m_spinBox;
 };

@@ -28,7 +28,7 @@ namespace {
 QString parameterHelp() {
   QString text = QStringLiteral("\nParameters for --set (name=value):\n");
   for (const core::ParameterSpec& spec : core::allParameters()) {
-    text += QStringLiteral("  ") + QString::fromStdString(core::describeParameter(spec)) +
+    text += QStringLiteral("  ") + QString::fromStdString(core::describeOption(spec)) +
             QLatin1Char('\n');
   }
   return text;
@@ -229,7 +229,7 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
                      .arg(QString::fromStdString(name)));
       return kExitUsage;
     }
-    core::Result<double> value = core::parseParameterValue(
+    core::Result<double> value = core::parseOptionValue(
         core::parameterSpec(*id), assignment.mid(equals + 1).trimmed().toStdString());
     if (!value) {
       printError(QStringLiteral("--set: ") + QString::fromStdString(value.error()));

@@ -118,6 +118,33 @@ TEST(ImageIO, JpegIsCloseOnSmoothContent) {
   EXPECT_LT(worst, 8.0 / 255.0);
 }
 
+TEST(ImageIO, EightBitOutputOfFinerDataIsDithered) {
+  // A gentle gradient spanning 4 levels over 256 texels: rounded, it would be 4 flat bands.
+  Image gradient(256, 16, 1);
+  gradient.setSourceBitsPerChannel(32);
+  for (int y = 0; y < 16; ++y) {
+    for (int x = 0; x < 256; ++x)
+      gradient.at(x, y, 0) = (100.0f + 4.0f * x / 256.0f) / 255.0f;
+  }
+  const std::string path = scratchFolder() + "/dithered.png";
+  ASSERT_TRUE(saveImage(gradient, path, SampleFormat::UInt8).ok());
+  Result<Image> loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok());
+  // Each column keeps its mean (within the noise of 16 samples) instead of snapping to a band,
+  // and no value strays more than one level.
+  int columnsBetweenLevels = 0;
+  for (int x = 0; x < 256; ++x) {
+    double mean = 0.0;
+    for (int y = 0; y < 16; ++y) {
+      const double level = loaded->at(x, y, 0) * 255.0;
+      ASSERT_LE(std::abs(level - gradient.at(x, y, 0) * 255.0), 1.0 + 1e-3);
+      mean += level / 16.0;
+    }
+    columnsBetweenLevels += std::abs(mean - std::round(mean)) > 0.05;
+  }
+  EXPECT_GT(columnsBetweenLevels, 128);
+}
+
 TEST(ImageIO, InfoReportsWhatTheHeaderSays) {
   const std::string path = scratchFolder() + "/info16.png";
   ASSERT_TRUE(saveImage(quantizedPattern(30, 20, 1, 65535), path, SampleFormat::UInt16).ok());

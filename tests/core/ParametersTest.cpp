@@ -29,18 +29,18 @@ TEST(Parameters, TableIsConsistent) {
 
 TEST(Parameters, ParsesNumbersAndBooleansAndRejectsNonsense) {
   const ParameterSpec& tiling = parameterSpec(ParamId::Tiling);
-  EXPECT_EQ(parseParameterValue(tiling, "2.5").value(), 2.5);
-  EXPECT_FALSE(parseParameterValue(tiling, "abc").ok());
-  EXPECT_FALSE(parseParameterValue(tiling, "2.5x").ok());
-  EXPECT_FALSE(parseParameterValue(tiling, "nan").ok());
-  Result<double> outside = parseParameterValue(tiling, "1000");
+  EXPECT_EQ(parseOptionValue(tiling, "2.5").value(), 2.5);
+  EXPECT_FALSE(parseOptionValue(tiling, "abc").ok());
+  EXPECT_FALSE(parseOptionValue(tiling, "2.5x").ok());
+  EXPECT_FALSE(parseOptionValue(tiling, "nan").ok());
+  Result<double> outside = parseOptionValue(tiling, "1000");
   ASSERT_FALSE(outside.ok());
   EXPECT_NE(outside.error().find("tiling"), std::string::npos) << outside.error();
 
   const ParameterSpec& yDown = parameterSpec(ParamId::NormalYDown);
-  EXPECT_EQ(parseParameterValue(yDown, "true").value(), 1.0);
-  EXPECT_EQ(parseParameterValue(yDown, "OFF").value(), 0.0);
-  EXPECT_FALSE(parseParameterValue(yDown, "maybe").ok());
+  EXPECT_EQ(parseOptionValue(yDown, "true").value(), 1.0);
+  EXPECT_EQ(parseOptionValue(yDown, "OFF").value(), 0.0);
+  EXPECT_FALSE(parseOptionValue(yDown, "maybe").ok());
 }
 
 TEST(Parameters, MaterialClampsAndReplacesNonFiniteValues) {

@@ -32,7 +32,9 @@ bool writeSample(const tools::SampleMaterial& sample, const std::filesystem::pat
   std::filesystem::create_directories(folder);
   const std::string base = (folder / sample.name).string();
 
+  // Central differences, as the samples were first made (a kernel change would change them).
   core::NormalFromHeightOptions normalOptions;
+  normalOptions.kernel = core::GradientKernel::Central;
   normalOptions.strength = float(sample.heightScale * sample.height.width());
   normalOptions.edge = core::EdgeMode::Wrap;
   const core::Image normal = core::normalMapFromHeight(sample.height, normalOptions);

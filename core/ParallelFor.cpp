@@ -1,0 +1,34 @@
+// ParallelFor; see ParallelFor.h.
+#include "core/ParallelFor.h"
+
+#include <QtConcurrent/QtConcurrentMap>
+
+#include <algorithm>
+#include <atomic>
+#include <vector>
+
+namespace relief::core {
+
+bool parallelFor(int count, const std::function<void(int)>& body, const WorkControl& control) {
+  if (count <= 0)
+    return !control.cancelled();
+  // Chunks of rows: small enough to balance the pool and to answer a cancel quickly, large
+  // enough that the pool's overhead stays negligible.
+  const int chunk = std::clamp(count / 64, 1, 64);
+  std::vector<int> starts;
+  for (int start = 0; start < count; start += chunk)
+    starts.push_back(start);
+  std::atomic<int> done{0};
+  QtConcurrent::blockingMap(starts, [&](int start) {
+    if (control.cancelled())
+      return;
+    const int end = std::min(start + chunk, count);
+    for (int i = start; i < end; ++i)
+      body(i);
+    const int finished = done.fetch_add(end - start) + (end - start);
+    control.report(double(finished) / double(count));
+  });
+  return !control.cancelled();
+}
+
+}  // namespace relief::core

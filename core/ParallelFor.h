@@ -1,0 +1,16 @@
+// parallelFor: runs body(i) for i in [0, count) on the shared thread pool in chunks, reporting
+// progress and stopping early when cancelled. The image generators and the error view use it
+// for their rows.
+#pragma once
+
+#include "core/WorkControl.h"
+
+#include <functional>
+
+namespace relief::core {
+
+// Returns false when the work was cancelled (some rows may not have run).
+bool parallelFor(int count, const std::function<void(int index)>& body,
+                 const WorkControl& control = {});
+
+}  // namespace relief::core
