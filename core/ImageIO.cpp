@@ -207,9 +207,8 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
   }
   OIIO::ImageSpec spec(image.width(), image.height(), image.channels(),
                        chooseFileType(image, ext, format));
-  if (image.colorSpace() == ColorSpace::Srgb) {
-    spec.attribute("oiio:ColorSpace", "sRGB");
-  }
+  // Tag linear data (normals, heights) as such, so readers do not treat it as sRGB colour.
+  spec.attribute("oiio:ColorSpace", image.colorSpace() == ColorSpace::Srgb ? "sRGB" : "Linear");
   if (ext == ".exr") {
     spec.attribute("compression", "zip");
   }

@@ -1,5 +1,6 @@
 // relief-cli: Relief's command-line twin. Dispatches to one command per verb.
 #include "CliCommon.h"
+#include "GenerateCommand.h"
 #include "InfoCommand.h"
 #include "RenderCommand.h"
 
@@ -14,6 +15,8 @@ const char* kUsage =
     "\n"
     "Commands:\n"
     "  render   Render a preset or maps offscreen to an image (needs an X display)\n"
+    "  generate Make maps from other maps: normal, height, height-from-color, ao,\n"
+    "           curvature, pack\n"
     "  info     Print an image's size, channels, bit depth and colour space\n"
     "\n"
     "Run 'relief-cli <command> --help' for a command's options.\n";
@@ -34,6 +37,8 @@ int main(int argc, char* argv[]) {
   QCoreApplication application(argc, argv);
   if (command == QStringLiteral("info"))
     return runInfo(QCoreApplication::arguments());
+  if (command == QStringLiteral("generate"))
+    return runGenerate(QCoreApplication::arguments());
   printError(QStringLiteral("unknown command '%1'").arg(command));
   printOut(QString::fromUtf8(kUsage));
   return kExitUsage;

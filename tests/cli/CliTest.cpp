@@ -285,6 +285,73 @@ TEST(Cli, RenderRefusesBadTechniquesViewsAndMeshes) {
   }
 }
 
+TEST(Cli, GenerateMakesEveryMapAtFullPrecision) {
+  const std::string folder = scratchFolder();
+  const QString height = q(sourcePath("samples/tiles/tiles_height.png"));
+  const QString normal = q(sourcePath("samples/tiles/tiles_normal.png"));
+  const QString color = q(sourcePath("samples/tiles/tiles_color.png"));
+  const struct {
+    QStringList arguments;
+    std::string out;
+    int bits;
+    int channels;
+  } cases[] = {
+      {{"normal", "--in", height, "--kernel", "scharr", "--strength", "15", "--convention",
+        "directx", "--edge", "wrap"},
+       "n.png", 16, 3},
+      {{"height", "--in", normal}, "h.exr", 32, 1},
+      {{"height-from-color", "--in", color, "--radius", "32", "--invert", "true"}, "hc.tif", 16, 1},
+      {{"ao", "--in", height, "--radius", "8", "--directions", "8"}, "ao.jpg", 8, 1},
+      {{"curvature", "--in", normal, "--from", "normal"}, "c.png", 16, 1},
+      {{"pack", "--normal", normal, "--height", height}, "nh.png", 16, 4},
+  };
+  for (const auto& c : cases) {
+    const std::string out = folder + "/" + c.out;
+    CliRun run = runCli(QStringList{QStringLiteral("generate")} + c.arguments +
+                        QStringList{QStringLiteral("--out"), q(out)});
+    ASSERT_EQ(run.exitCode, 0) << c.out << ": " << run.err;
+    core::Result<core::ImageFileInfo> info = core::readImageInfo(out);
+    ASSERT_TRUE(info.ok()) << info.error();
+    EXPECT_EQ(info->bitsPerChannel, c.bits) << c.out;
+    EXPECT_EQ(info->channels, c.channels) << c.out;
+    EXPECT_EQ(info->width, 1024) << c.out;
+  }
+  // Height from normal reports the relief's depth.
+  CliRun depth = runCli({QStringLiteral("generate"), QStringLiteral("height"), QStringLiteral("--in"),
+                         normal, QStringLiteral("--out"), q(folder + "/depth.png")});
+  EXPECT_NE(depth.out.find("relief depth"), std::string::npos) << depth.out;
+}
+
+TEST(Cli, GenerateExplainsWhatIsWrong) {
+  const std::string folder = scratchFolder();
+  const QString height = q(sourcePath("samples/tiles/tiles_height.png"));
+  const QString out = q(folder + "/x.png");
+  const std::vector<std::pair<QStringList, std::string>> usage = {
+      {{"generate", "emboss", "--in", height, "--out", out}, "emboss"},
+      {{"generate", "normal", "--out", out}, "--in"},
+      {{"generate", "normal", "--in", height}, "--out"},
+      {{"generate", "normal", "--in", height, "--out", out, "--kernel", "prewitt"}, "kernel"},
+      {{"generate", "normal", "--in", height, "--out", out, "--strength", "-3"}, "strength"},
+      {{"generate", "pack", "--normal", height, "--height", height, "--out", out, "--swizzle",
+        "n.r z.g"},
+       "swizzle"},
+  };
+  for (const auto& [arguments, mention] : usage) {
+    CliRun run = runCli(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments.join(QLatin1Char(' ')).toStdString();
+    EXPECT_NE(run.err.find(mention), std::string::npos) << run.err;
+  }
+  CliRun missing = runCli({"generate", "ao", "--in", q(folder + "/nothing.png"), "--out", out});
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("nothing.png"), std::string::npos);
+  // A photograph given as a normal map: a warning naming it, and the work still done.
+  CliRun photo = runCli({"generate", "height", "--in", q(sourcePath("samples/tiles/tiles_color.png")),
+                         "--out", q(folder + "/photo.png")});
+  EXPECT_EQ(photo.exitCode, 0) << photo.err;
+  EXPECT_NE(photo.err.find("warning: "), std::string::npos);
+  EXPECT_NE(photo.err.find("tiles_color.png"), std::string::npos);
+}
+
 TEST(Cli, RenderWithoutADisplaySaysSo) {
   QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
   environment.remove(QStringLiteral("DISPLAY"));
