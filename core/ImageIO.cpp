@@ -152,6 +152,15 @@ Result<ImageFileInfo> readImageInfo(const std::string& path) {
   return info;
 }
 
+SampleFormat fullPrecisionFormatFor(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".exr")
+    return SampleFormat::Float;
+  if (ext == ".png" || ext == ".tif" || ext == ".tiff")
+    return SampleFormat::UInt16;
+  return SampleFormat::UInt8;
+}
+
 Status verifyImageData(const std::string& path) {
   auto opened = openInput(path);
   if (!opened)

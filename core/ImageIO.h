@@ -31,6 +31,10 @@ enum class SampleFormat {
 
 Result<ImageFileInfo> readImageInfo(const std::string& path);
 
+// The finest sample format the file type holds, for maps that must not lose precision: float
+// for EXR, 16-bit for PNG and TIFF, 8-bit (dithered by saveImage) for the rest.
+SampleFormat fullPrecisionFormatFor(const std::string& path);
+
 // Decodes every pixel (a strip of rows at a time, so memory stays small) to prove the file is
 // intact: catches truncation and checksum errors that the header alone does not show.
 Status verifyImageData(const std::string& path);

@@ -1,6 +1,8 @@
 // ParallelFor; see ParallelFor.h.
 #include "core/ParallelFor.h"
 
+#include <QThread>
+#include <QThreadPool>
 #include <QtConcurrent/QtConcurrentMap>
 
 #include <algorithm>
@@ -8,6 +10,22 @@
 #include <vector>
 
 namespace relief::core {
+namespace {
+
+// The rows run on a pool of their own. Callers are often tasks on Qt's global pool themselves
+// (a generator's preview and its full-size run side by side); if the rows went to the same
+// pool, two such callers waiting for their rows would hold every thread and never get them.
+// Row tasks never wait for anything, so this pool always drains.
+QThreadPool& rowPool() {
+  static QThreadPool* pool = [] {
+    auto* created = new QThreadPool;
+    created->setMaxThreadCount(std::max(1, QThread::idealThreadCount()));
+    return created;
+  }();
+  return *pool;
+}
+
+}  // namespace
 
 bool parallelFor(int count, const std::function<void(int)>& body, const WorkControl& control) {
   if (count <= 0)
@@ -19,7 +37,7 @@ bool parallelFor(int count, const std::function<void(int)>& body, const WorkCont
   for (int start = 0; start < count; start += chunk)
     starts.push_back(start);
   std::atomic<int> done{0};
-  QtConcurrent::blockingMap(starts, [&](int start) {
+  QtConcurrent::blockingMap(&rowPool(), starts, [&](int start) {
     if (control.cancelled())
       return;
     const int end = std::min(start + chunk, count);

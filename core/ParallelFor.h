@@ -1,6 +1,6 @@
-// parallelFor: runs body(i) for i in [0, count) on the shared thread pool in chunks, reporting
-// progress and stopping early when cancelled. The image generators and the error view use it
-// for their rows.
+// parallelFor: runs body(i) for i in [0, count) on a thread pool in chunks, reporting progress
+// and stopping early when cancelled. The image generators and the error view use it for their
+// rows. The body must not itself call parallelFor.
 #pragma once
 
 #include "core/WorkControl.h"

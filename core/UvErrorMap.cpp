@@ -2,9 +2,8 @@
 #include "core/UvErrorMap.h"
 
 #include "core/Heatmap.h"
+#include "core/ParallelFor.h"
 #include "core/ReliefTracer.h"
-
-#include <QtConcurrent/QtConcurrentMap>
 
 #include <algorithm>
 #include <cmath>
@@ -20,32 +19,36 @@ UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const H
   const int width = finalUv.width();
   const int height = finalUv.height();
   result.texels = Image(width, height, 1);
-  std::vector<int> rows(static_cast<std::size_t>(height));
-  std::iota(rows.begin(), rows.end(), 0);
   std::atomic<int> done{0};
-  QtConcurrent::blockingMap(rows, [&](int y) {
-    for (int x = 0; x < width; ++x) {
-      float& out = result.texels.at(x, y, 0);
-      out = -1.0f;
-      if (cancel && cancel->load())
-        continue;
-      const float* uv = finalUv.pixel(x, y);
-      const float* ray = eyeRays.pixel(x, y);
-      if (uv[3] <= 0.0f)
-        continue;
-      const double vx = ray[2], vy = ray[3];
-      const double vz = std::sqrt(std::max(0.0, 1.0 - vx * vx - vy * vy));
-      const ViewRayHit hit = traceViewRay(field, {ray[0], ray[1]}, {vx, vy, vz});
-      if (!hit.hit)
-        continue;
-      const double du = (double(uv[0]) - hit.uv.x) * field.width();
-      const double dv = (double(uv[1]) - hit.uv.y) * field.height();
-      out = float(std::hypot(du, dv));
-    }
-    const int finished = ++done;
-    if (progress)
-      progress(finished, height);
-  });
+  WorkControl control;
+  if (cancel)
+    control.cancel = cancel;
+  parallelFor(
+      height,
+      [&](int y) {
+        for (int x = 0; x < width; ++x) {
+          float& out = result.texels.at(x, y, 0);
+          out = -1.0f;
+          if (cancel && cancel->load())
+            continue;
+          const float* uv = finalUv.pixel(x, y);
+          const float* ray = eyeRays.pixel(x, y);
+          if (uv[3] <= 0.0f)
+            continue;
+          const double vx = ray[2], vy = ray[3];
+          const double vz = std::sqrt(std::max(0.0, 1.0 - vx * vx - vy * vy));
+          const ViewRayHit hit = traceViewRay(field, {ray[0], ray[1]}, {vx, vy, vz});
+          if (!hit.hit)
+            continue;
+          const double du = (double(uv[0]) - hit.uv.x) * field.width();
+          const double dv = (double(uv[1]) - hit.uv.y) * field.height();
+          out = float(std::hypot(du, dv));
+        }
+        const int finished = ++done;
+        if (progress)
+          progress(finished, height);
+      },
+      control);
 
   std::vector<float> covered;
   covered.reserve(result.texels.pixelCount());

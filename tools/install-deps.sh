@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package that Relief's build, tests and app need. Safe to run again:
 # it only calls apt when something is missing. Uses sudo when not run as root.
+# --bench also installs what the benchmarks compare against (OpenCV for bench-generate).
 set -euo pipefail
 
 packages=(
@@ -16,6 +17,10 @@ packages=(
   # screenshots and independent image readers used while testing
   imagemagick python3-pil python3-numpy
 )
+
+if [ "${1:-}" = "--bench" ]; then
+  packages+=(python3-opencv)
+fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -5,6 +5,7 @@
 #include "core/MaterialPreset.h"
 #include "core/MeshImport.h"
 #include "core/MeshPrimitives.h"
+#include "ui/GeneratePanel.h"
 #include "ui/LightPanel.h"
 #include "ui/MapsPanel.h"
 #include "ui/MaterialDocument.h"
@@ -126,11 +127,15 @@ void MainWindow::createDocks() {
                                         m_parameters, Qt::RightDockWidgetArea);
   m_light = new LightPanel(m_viewport);
   addDock(tr("Light"), QStringLiteral("lightDock"), m_light, Qt::LeftDockWidgetArea);
+  m_generate = new GeneratePanel(m_document);
+  QDockWidget* generateDock =
+      addDock(tr("Generate"), QStringLiteral("generateDock"), m_generate, Qt::RightDockWidgetArea);
   auto* history = new QUndoView(m_document->undoStack());
   history->setEmptyLabel(tr("<opened>"));
   QDockWidget* historyDock =
       addDock(tr("History"), QStringLiteral("historyDock"), history, Qt::RightDockWidgetArea);
   tabifyDockWidget(parametersDock, historyDock);
+  tabifyDockWidget(parametersDock, generateDock);
   parametersDock->raise();
   resizeDocks({parametersDock}, {380}, Qt::Horizontal);
   connect(m_maps, &MapsPanel::loadRequested, this,

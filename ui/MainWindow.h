@@ -17,6 +17,7 @@ class QProgressBar;
 
 namespace relief::ui {
 
+class GeneratePanel;
 class LightPanel;
 class MapsPanel;
 class MaterialDocument;
@@ -34,6 +35,7 @@ class MainWindow : public QMainWindow {
   ViewportWidget* viewport() const { return m_viewport; }
   ParameterPanel* parameterPanel() const { return m_parameters; }
   LightPanel* lightPanel() const { return m_light; }
+  GeneratePanel* generatePanel() const { return m_generate; }
   QComboBox* debugViewBox() const { return m_debugView; }
   QComboBox* meshBox() const { return m_meshBox; }
   QAction* compareAction() const { return m_compare; }
@@ -71,6 +73,7 @@ class MainWindow : public QMainWindow {
   ParameterPanel* m_parameters = nullptr;
   MapsPanel* m_maps = nullptr;
   LightPanel* m_light = nullptr;
+  GeneratePanel* m_generate = nullptr;
   QComboBox* m_debugView = nullptr;
   QComboBox* m_meshBox = nullptr;
   QAction* m_compare = nullptr;

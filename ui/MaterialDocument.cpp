@@ -42,6 +42,16 @@ void MaterialDocument::setMap(core::MapSlot slot, std::shared_ptr<const core::Im
   m_undoStack.push(new SetMapCommand(this, slot, m_material.map(slot), probe.map(slot)));
 }
 
+void MaterialDocument::applyGenerated(
+    core::MapSlot slot, std::shared_ptr<const core::Image> image, const QString& label,
+    const std::vector<std::pair<core::ParamId, double>>& parameterChanges) {
+  m_undoStack.beginMacro(label);
+  setMap(slot, std::move(image), QString());
+  for (const auto& [id, value] : parameterChanges)
+    setParameter(id, value);
+  m_undoStack.endMacro();
+}
+
 void MaterialDocument::clearMap(core::MapSlot slot) {
   if (!m_material.hasMap(slot))
     return;

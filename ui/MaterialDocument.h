@@ -10,6 +10,8 @@
 #include <QUndoStack>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace relief::ui {
 
@@ -35,6 +37,10 @@ class MaterialDocument : public QObject {
   void setMap(core::MapSlot slot, std::shared_ptr<const core::Image> image,
               const QString& sourcePath);
   void clearMap(core::MapSlot slot);
+  // A generated map and the parameter changes that go with it, as one undo step.
+  void applyGenerated(core::MapSlot slot, std::shared_ptr<const core::Image> image,
+                      const QString& label,
+                      const std::vector<std::pair<core::ParamId, double>>& parameterChanges);
 
   // Used by the undo commands: change the material and notify, without pushing anything.
   void applyParameter(core::ParamId id, double value);

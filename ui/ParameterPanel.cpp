@@ -2,6 +2,7 @@
 #include "ui/ParameterPanel.h"
 
 #include "ui/MaterialDocument.h"
+#include "ui/OptionEditor.h"
 #include "ui/ParameterSlider.h"
 #include "ui/QtText.h"
 
@@ -45,8 +46,6 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
       outer->addWidget(box);
     }
     QWidget* editor = createEditor(spec);
-    editor->setObjectName(toQString(spec.name));
-    editor->setToolTip(toQString(core::describeOption(spec)));
     m_editors[std::size_t(spec.id)] = editor;
     auto* label = new QLabel(toQString(spec.label));
     label->setToolTip(editor->toolTip());
@@ -68,48 +67,17 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
 
 QWidget* ParameterPanel::createEditor(const core::ParameterSpec& spec) {
   const core::ParamId id = spec.id;
-  switch (spec.kind) {
-    case core::ParamKind::Bool: {
-      auto* box = new QCheckBox;
-      connect(box, &QCheckBox::toggled, this,
-              [this, id](bool on) { m_document->setParameter(id, on ? 1.0 : 0.0); });
-      return box;
-    }
-    case core::ParamKind::Choice: {
-      auto* box = new QComboBox;
-      for (std::string_view choice : spec.choices)
-        box->addItem(toQString(choice));
-      connect(box, &QComboBox::activated, this,
-              [this, id](int index) { m_document->setParameter(id, double(index)); });
-      return box;
-    }
-    case core::ParamKind::Float:
-    case core::ParamKind::Int:
-      break;
-  }
-  auto* slider = new ParameterSlider(spec);
-  connect(slider, &ParameterSlider::dragStarted, this,
-          [this] { m_currentDrag = m_document->beginInteractiveEdit(); });
-  connect(slider, &ParameterSlider::valueEdited, this, [this, id](double value, bool dragging) {
-    m_document->setParameter(id, value, dragging ? m_currentDrag : 0);
+  return createOptionEditor(spec, [this, id](const OptionEdit& edit) {
+    if (edit.dragStarted)
+      m_currentDrag = m_document->beginInteractiveEdit();
+    m_document->setParameter(id, edit.value, edit.dragging ? m_currentDrag : 0);
   });
-  return slider;
 }
 
 void ParameterPanel::showValue(core::ParamId id) {
   if (id == core::ParamId::ShadowMode)
     updateRelevance();
-  const double value = m_document->material().parameter(id);
-  QWidget* editor = m_editors[std::size_t(id)];
-  if (auto* slider = qobject_cast<ParameterSlider*>(editor)) {
-    slider->setValue(value);
-  } else if (auto* check = qobject_cast<QCheckBox*>(editor)) {
-    const QSignalBlocker block(check);
-    check->setChecked(value != 0.0);
-  } else if (auto* combo = qobject_cast<QComboBox*>(editor)) {
-    const QSignalBlocker block(combo);
-    combo->setCurrentIndex(int(value));
-  }
+  setOptionEditorValue(m_editors[std::size_t(id)], m_document->material().parameter(id));
 }
 
 void ParameterPanel::showAll() {

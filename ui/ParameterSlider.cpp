@@ -6,6 +6,7 @@
 #include <QSignalBlocker>
 #include <QSlider>
 
+#include <algorithm>
 #include <cmath>
 
 namespace relief::ui {
@@ -60,13 +61,26 @@ void ParameterSlider::setValue(double value) {
 }
 
 int ParameterSlider::toSlider(double value) const {
-  const double t = (value - m_spec.minimum) / (m_spec.maximum - m_spec.minimum);
+  double t = (value - m_spec.minimum) / (m_spec.maximum - m_spec.minimum);
+  if (isLogarithmic()) {
+    t = std::log(std::max(value, m_spec.minimum) / m_spec.minimum) /
+        std::log(m_spec.maximum / m_spec.minimum);
+  }
   return int(std::lround(t * m_slider->maximum()));
+}
+
+bool ParameterSlider::isLogarithmic() const {
+  // Ranges over two decades (strength 0.01..200, shininess 1..256) need the slider's travel
+  // spread evenly over the ratio, or the useful values sit in its first pixels.
+  return m_spec.kind == core::ParamKind::Float && m_spec.minimum > 0.0 &&
+         m_spec.maximum / m_spec.minimum >= 100.0;
 }
 
 double ParameterSlider::fromSlider(int position) const {
   const double t = double(position) / double(m_slider->maximum());
-  const double value = m_spec.minimum + t * (m_spec.maximum - m_spec.minimum);
+  const double value = isLogarithmic()
+                           ? m_spec.minimum * std::pow(m_spec.maximum / m_spec.minimum, t)
+                           : m_spec.minimum + t * (m_spec.maximum - m_spec.minimum);
   // Round to what the spin box shows so the slider never produces hidden digits.
   const double scale = std::pow(10.0, m_spec.decimals);
   return std::round(value * scale) / scale;

@@ -33,6 +33,7 @@ class ParameterSlider : public QWidget {
   void valueEdited(double value, bool dragging);
 
  private:
+  bool isLogarithmic() const;
   int toSlider(double value) const;
   double fromSlider(int position) const;
 

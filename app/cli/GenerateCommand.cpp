@@ -22,26 +22,16 @@ QString generatorList() {
   return text;
 }
 
-// Writes the precision the extension allows: 16-bit PNG/TIFF, float EXR, 8-bit (dithered) for
-// JPEG and TGA. Nothing is quantised to 8 bits on the way.
-core::SampleFormat formatFor(const QString& path) {
-  const QString suffix = QFileInfo(path).suffix().toLower();
-  if (suffix == QStringLiteral("exr")) return core::SampleFormat::Float;
-  if (suffix == QStringLiteral("png") || suffix == QStringLiteral("tif") ||
-      suffix == QStringLiteral("tiff")) {
-    return core::SampleFormat::UInt16;
-  }
-  return core::SampleFormat::UInt8;
-}
-
 }  // namespace
 
 int runGenerate(const QStringList& arguments) {
-  const QString usageTop = QStringLiteral("Usage: relief-cli generate <generator> [options]\n\n"
-                                          "Generators:\n") +
+  const QString usageTop = QStringLiteral(
+                               "Usage: relief-cli generate <generator> [options]\n\n"
+                               "Generators:\n") +
                            generatorList() +
-                           QStringLiteral("\nRun 'relief-cli generate <generator> --help' for its "
-                                          "options.\n");
+                           QStringLiteral(
+                               "\nRun 'relief-cli generate <generator> --help' for its "
+                               "options.\n");
   if (arguments.size() < 3 || arguments[2] == QStringLiteral("--help") ||
       arguments[2] == QStringLiteral("-h")) {
     printOut(usageTop);
@@ -87,7 +77,8 @@ int runGenerate(const QStringList& arguments) {
                         (*kind == core::GeneratorKind::Pack
                              ? QStringLiteral("--normal N --height H --out NH [options]")
                              : QStringLiteral("--in FILE --out FILE [options]"));
-  if (auto exit = parseOrExit(parser, withoutGenerator, usage)) return *exit;
+  if (auto exit = parseOrExit(parser, withoutGenerator, usage))
+    return *exit;
   if (!parser.positionalArguments().isEmpty()) {
     printError(QStringLiteral("generate %1: unexpected argument '%2' (see --help)")
                    .arg(qstr(info.name), parser.positionalArguments().front()));
@@ -97,7 +88,8 @@ int runGenerate(const QStringList& arguments) {
   core::GeneratorValues values = core::defaultGeneratorValues(*kind);
   for (std::size_t i = 0; i < info.options.size(); ++i) {
     const QString name = qstr(info.options[i].name);
-    if (!parser.isSet(name)) continue;
+    if (!parser.isSet(name))
+      continue;
     core::Result<double> value =
         core::parseOptionValue(info.options[i], parser.value(name).toStdString());
     if (!value) {
@@ -124,10 +116,9 @@ int runGenerate(const QStringList& arguments) {
       printError(QString::fromStdString(image.error()));
       return kExitFailure;
     }
-    const bool normalInput =
-        input.defaultSlot == core::MapSlot::Normal ||
-        (*kind == core::GeneratorKind::Curvature &&
-         values[std::size_t(core::findGeneratorOption(*kind, "from"))] == 1.0);
+    const bool normalInput = input.defaultSlot == core::MapSlot::Normal ||
+                             (*kind == core::GeneratorKind::Curvature &&
+                              values[std::size_t(core::findGeneratorOption(*kind, "from"))] == 1.0);
     if (normalInput) {
       if (const auto warning = core::normalMapWarning(image.value())) {
         printError(QStringLiteral("warning: ") + path + QStringLiteral(": ") +
@@ -137,7 +128,8 @@ int runGenerate(const QStringList& arguments) {
     images.push_back(std::move(image).value());
   }
   std::vector<const core::Image*> inputs;
-  for (const core::Image& image : images) inputs.push_back(&image);
+  for (const core::Image& image : images)
+    inputs.push_back(&image);
 
   core::Result<core::GeneratedMap> result = core::runGenerator({*kind, inputs, values, 1.0});
   if (!result) {
@@ -149,7 +141,8 @@ int runGenerate(const QStringList& arguments) {
   if (*kind == core::GeneratorKind::Pack && parser.isSet(QStringLiteral("swizzle"))) {
     // The levelled height (alpha of the packed result) stands in for the height input.
     core::Image height(output.width(), output.height(), 1);
-    for (std::size_t p = 0; p < height.pixelCount(); ++p) height.data()[p] = output.data()[p * 4 + 3];
+    for (std::size_t p = 0; p < height.pixelCount(); ++p)
+      height.data()[p] = output.data()[p * 4 + 3];
     core::Result<core::Image> swizzled = core::swizzleChannels(
         {inputs[0], &height}, "nh", parser.value(QStringLiteral("swizzle")).toStdString());
     if (!swizzled) {
@@ -159,7 +152,8 @@ int runGenerate(const QStringList& arguments) {
     output = std::move(swizzled).value();
   }
   const QString outPath = parser.value(QStringLiteral("out"));
-  if (core::Status saved = core::saveImage(output, outPath.toStdString(), formatFor(outPath));
+  if (core::Status saved = core::saveImage(output, outPath.toStdString(),
+                                           core::fullPrecisionFormatFor(outPath.toStdString()));
       !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;

@@ -298,7 +298,9 @@ TEST(Cli, GenerateMakesEveryMapAtFullPrecision) {
   } cases[] = {
       {{"normal", "--in", height, "--kernel", "scharr", "--strength", "15", "--convention",
         "directx", "--edge", "wrap"},
-       "n.png", 16, 3},
+       "n.png",
+       16,
+       3},
       {{"height", "--in", normal}, "h.exr", 32, 1},
       {{"height-from-color", "--in", color, "--radius", "32", "--invert", "true"}, "hc.tif", 16, 1},
       {{"ao", "--in", height, "--radius", "8", "--directions", "8"}, "ao.jpg", 8, 1},
@@ -317,8 +319,9 @@ TEST(Cli, GenerateMakesEveryMapAtFullPrecision) {
     EXPECT_EQ(info->width, 1024) << c.out;
   }
   // Height from normal reports the relief's depth.
-  CliRun depth = runCli({QStringLiteral("generate"), QStringLiteral("height"), QStringLiteral("--in"),
-                         normal, QStringLiteral("--out"), q(folder + "/depth.png")});
+  CliRun depth =
+      runCli({QStringLiteral("generate"), QStringLiteral("height"), QStringLiteral("--in"), normal,
+              QStringLiteral("--out"), q(folder + "/depth.png")});
   EXPECT_NE(depth.out.find("relief depth"), std::string::npos) << depth.out;
 }
 
@@ -345,8 +348,9 @@ TEST(Cli, GenerateExplainsWhatIsWrong) {
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_NE(missing.err.find("nothing.png"), std::string::npos);
   // A photograph given as a normal map: a warning naming it, and the work still done.
-  CliRun photo = runCli({"generate", "height", "--in", q(sourcePath("samples/tiles/tiles_color.png")),
-                         "--out", q(folder + "/photo.png")});
+  CliRun photo =
+      runCli({"generate", "height", "--in", q(sourcePath("samples/tiles/tiles_color.png")), "--out",
+              q(folder + "/photo.png")});
   EXPECT_EQ(photo.exitCode, 0) << photo.err;
   EXPECT_NE(photo.err.find("warning: "), std::string::npos);
   EXPECT_NE(photo.err.find("tiles_color.png"), std::string::npos);

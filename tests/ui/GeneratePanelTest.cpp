@@ -1,0 +1,132 @@
+// The Generate panel in the real window: a live preview and a full-size result in the
+// background, Apply as one undo step that the viewport shows at once, undo restoring the old
+// map, the material compensated when it must be, and clear messages for missing sources.
+#include "core/ColorSpace.h"
+#include "support/ImageCompare.h"
+#include "support/TestPaths.h"
+#include "ui/GeneratePanel.h"
+#include "ui/GeneratorRunner.h"
+#include "ui/MainWindow.h"
+#include "ui/MaterialDocument.h"
+#include "ui/ParameterSlider.h"
+#include "ui/ViewportWidget.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+namespace relief::test {
+namespace {
+
+core::Image grabbed(ui::ViewportWidget* viewport) {
+  const QImage rgba = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGBA8888);
+  core::Image image(rgba.width(), rgba.height(), 4, core::ColorSpace::Srgb);
+  for (int y = 0; y < rgba.height(); ++y) {
+    const uchar* line = rgba.constScanLine(y);
+    for (int x = 0; x < rgba.width() * 4; ++x)
+      image.pixel(0, y)[x] = float(line[x]) / 255.0f;
+  }
+  return image;
+}
+
+class GeneratePanelTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    m_window = std::make_unique<ui::MainWindow>();
+    m_window->resize(1100, 700);
+    m_window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("bricks"))));
+  }
+  ui::GeneratePanel* panel() { return m_window->generatePanel(); }
+  ui::MaterialDocument* document() { return m_window->document(); }
+
+  bool waitForResult() {
+    QSignalSpy ready(panel(), &ui::GeneratePanel::resultAvailable);
+    return panel()->result().has_value() || ready.wait(60000);
+  }
+
+  std::unique_ptr<ui::MainWindow> m_window;
+};
+
+TEST_F(GeneratePanelTest, ApplyingANormalMapIsOneUndoStepTheViewportShows) {
+  panel()->setGenerator(core::GeneratorKind::Normal);
+  auto* strength = qobject_cast<ui::ParameterSlider*>(panel()->optionEditor("strength"));
+  ASSERT_NE(strength, nullptr);
+  strength->spinBox()->setValue(40.0);
+  ASSERT_TRUE(waitForResult());
+  ASSERT_TRUE(panel()->applyButton()->isEnabled());
+  EXPECT_EQ(panel()->result()->image.width(), 1024);
+
+  const auto before = document()->material().map(core::MapSlot::Normal).image;
+  const core::Image frameBefore = grabbed(m_window->viewport());
+  QTest::mouseClick(panel()->applyButton(), Qt::LeftButton);
+  EXPECT_EQ(document()->undoStack()->count(), 1);
+  EXPECT_NE(document()->material().map(core::MapSlot::Normal).image, before);
+  EXPECT_GT(compareImages(frameBefore, grabbed(m_window->viewport())).maxError, 4.0 / 255.0);
+
+  document()->undoStack()->undo();
+  EXPECT_EQ(document()->material().map(core::MapSlot::Normal).image, before);
+  EXPECT_EQ(compareImages(frameBefore, grabbed(m_window->viewport())).maxError, 0.0);
+}
+
+TEST_F(GeneratePanelTest, HeightFromNormalAlsoSetsTheHeightScaleInTheSameStep) {
+  panel()->setGenerator(core::GeneratorKind::Height);
+  ASSERT_TRUE(waitForResult());
+  ASSERT_TRUE(panel()->result()->depthTexels.has_value());
+  const double scale = document()->material().parameter(core::ParamId::HeightScale);
+  QTest::mouseClick(panel()->applyButton(), Qt::LeftButton);
+  EXPECT_EQ(document()->undoStack()->count(), 1);
+  const double expected = *panel()->result()->depthTexels / 1024.0;
+  EXPECT_NEAR(document()->material().parameter(core::ParamId::HeightScale), expected, 1e-3);
+  EXPECT_NEAR(document()->material().parameter(core::ParamId::HeightBias), -expected, 1e-3);
+  document()->undoStack()->undo();
+  EXPECT_EQ(document()->material().parameter(core::ParamId::HeightScale), scale);
+}
+
+TEST_F(GeneratePanelTest, PackingKeepsTheReliefAndSwitchesToAlphaHeight) {
+  panel()->setGenerator(core::GeneratorKind::Pack);
+  ASSERT_TRUE(waitForResult());
+  ASSERT_TRUE(panel()->result()->levels.has_value());
+  QTest::mouseClick(panel()->applyButton(), Qt::LeftButton);
+  const core::Material& material = document()->material();
+  EXPECT_TRUE(material.parameterFlag(core::ParamId::HeightInNormalAlpha));
+  EXPECT_EQ(material.image(core::MapSlot::Normal)->channels(), 4);
+  // Same relief: the bricks' heights spanned levels->low..high at scale 0.03, bias -0.03.
+  const core::LevelsRange range = *panel()->result()->levels;
+  EXPECT_NEAR(material.parameter(core::ParamId::HeightScale), 0.03 * (range.high - range.low),
+              1e-6);
+}
+
+TEST_F(GeneratePanelTest, AMissingSourceMapIsExplained) {
+  document()->clearMap(core::MapSlot::Height);
+  panel()->setGenerator(core::GeneratorKind::AmbientOcclusion);
+  EXPECT_FALSE(panel()->applyButton()->isEnabled());
+  const QList<QLabel*> labels = panel()->findChildren<QLabel*>();
+  bool explained = false;
+  for (const QLabel* label : labels)
+    explained = explained || label->text().contains(QStringLiteral("no height map"));
+  EXPECT_TRUE(explained);
+}
+
+TEST_F(GeneratePanelTest, EditsWhileRunningCancelTheOldWork) {
+  panel()->setGenerator(core::GeneratorKind::AmbientOcclusion);
+  auto* radius = qobject_cast<ui::ParameterSlider*>(panel()->optionEditor("radius"));
+  ASSERT_NE(radius, nullptr);
+  // Several quick edits, as while dragging: only the last one's result arrives.
+  for (double value : {10.0, 12.0, 14.0, 6.0})
+    radius->spinBox()->setValue(value);
+  ASSERT_TRUE(waitForResult());
+  QTest::qWait(200);
+  EXPECT_FALSE(panel()->runner()->isRunning());
+  EXPECT_TRUE(panel()->applyButton()->isEnabled());
+}
+
+}  // namespace
+}  // namespace relief::test

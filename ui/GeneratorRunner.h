@@ -1,0 +1,51 @@
+// GeneratorRunner: runs a map generator off the GUI thread for the Generate panel. Every
+// request first produces a quick preview at reduced size, then the full-size result, with
+// progress; a newer request cancels the older one, so dragging a slider stays live.
+#pragma once
+
+#include "core/generators/Generators.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QString>
+
+#include <atomic>
+#include <memory>
+#include <vector>
+
+namespace relief::ui {
+
+class GeneratorRunner : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit GeneratorRunner(QObject* parent = nullptr);
+  ~GeneratorRunner() override;
+
+  // The longest side of the quick preview, in texels.
+  static constexpr int kPreviewSize = 256;
+
+  // Starts the preview, then the full-size run; cancels what was running.
+  void request(core::GeneratorKind kind, std::vector<std::shared_ptr<const core::Image>> inputs,
+               core::GeneratorValues values);
+  void cancel();
+  bool isRunning() const { return m_running; }
+
+ Q_SIGNALS:
+  void previewReady(const relief::core::GeneratedMap& preview);
+  void resultReady(const relief::core::GeneratedMap& result);
+  void progress(double fraction);  // of the full-size run
+  void failed(const QString& message);
+
+ private:
+  struct Job;
+  void startFullSize();
+
+  std::shared_ptr<Job> m_job;  // the newest request
+  std::shared_ptr<std::atomic<bool>> m_cancel;
+  QFutureWatcher<core::Result<core::GeneratedMap>> m_previewWatcher;
+  QFutureWatcher<core::Result<core::GeneratedMap>> m_fullWatcher;
+  bool m_running = false;
+};
+
+}  // namespace relief::ui
