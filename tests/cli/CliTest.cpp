@@ -347,6 +347,10 @@ TEST(Cli, GenerateExplainsWhatIsWrong) {
   CliRun missing = runCli({"generate", "ao", "--in", q(folder + "/nothing.png"), "--out", out});
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_NE(missing.err.find("nothing.png"), std::string::npos);
+  writeBytes(folder + "/zero.png", "");
+  CliRun zero = runCli({"generate", "normal", "--in", q(folder + "/zero.png"), "--out", out});
+  EXPECT_EQ(zero.exitCode, 1);
+  EXPECT_NE(zero.err.find("zero.png: the file is empty"), std::string::npos) << zero.err;
   // A photograph given as a normal map: a warning naming it, and the work still done.
   CliRun photo =
       runCli({"generate", "height", "--in", q(sourcePath("samples/tiles/tiles_color.png")), "--out",
