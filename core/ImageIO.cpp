@@ -237,6 +237,15 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
     fs::remove(temporary, ignored);
     return makeError(path + ": cannot write (" + cleanOiioMessage(output->geterror()) + ")");
   }
+  // Some writers (OpenImageIO 2.4's PNG) report success after a short write, on a full disk
+  // or past a file-size limit. Decoding the file before it replaces the old one catches that.
+  if (Status intact = verifyImageData(temporary.string()); !intact) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    return makeError(path +
+                     ": cannot write (the written file does not read back whole: the "
+                     "disk may be full)");
+  }
   std::error_code ec;
   fs::rename(temporary, target, ec);
   if (ec) {

@@ -276,7 +276,7 @@ bool MainWindow::openPreset(const QString& path) {
     QMessageBox::warning(this, tr("Cannot open preset"), QString::fromStdString(loaded.error()));
     return false;
   }
-  m_document->reset(std::move(loaded->material), QFileInfo(path).absoluteFilePath());
+  m_document->reset(std::move(loaded->preset.material), QFileInfo(path).absoluteFilePath());
   m_lastFolder = QFileInfo(path).absolutePath();
   if (!loaded->warnings.empty()) {
     QStringList lines;

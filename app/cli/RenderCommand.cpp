@@ -55,6 +55,7 @@ struct RenderRequest {
   int height = 720;
   QString outPath;
   bool exr = false;
+  core::PresetView presetView;  // the preset's camera, light and mesh, used unless overridden
 };
 
 bool loadMapOption(const QCommandLineParser& parser, const QString& option, core::MapSlot slot,
@@ -203,7 +204,8 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     for (const std::string& warning : loaded->warnings) {
       printError(QStringLiteral("warning: ") + QString::fromStdString(warning));
     }
-    request.material = std::move(loaded->material);
+    request.material = std::move(loaded->preset.material);
+    request.presetView = loaded->preset.view;
   }
   // Maps given on the command line replace the preset's (a missing normal map is flat).
   if (!loadMapOption(parser, QStringLiteral("color"), core::MapSlot::Color, request.material) ||
@@ -257,7 +259,9 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   }
   request.frame.debugView = *view;
 
-  const QString meshName = parser.value(QStringLiteral("mesh"));
+  const QString meshName = parser.isSet(QStringLiteral("mesh")) || request.presetView.mesh.empty()
+                               ? parser.value(QStringLiteral("mesh"))
+                               : QString::fromStdString(request.presetView.mesh);
   if (const auto shape = core::findPrimitiveShape(meshName.toStdString())) {
     request.mesh = core::makePrimitive(*shape);
   } else if (QFileInfo(meshName).suffix().isEmpty() && !QFileInfo::exists(meshName)) {
@@ -284,6 +288,10 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   request.height = size.captured(2).toInt();
   core::OrbitCamera& camera = request.frame.view.camera;
   core::DirectionalLight& light = request.frame.view.light;
+  if (request.presetView.camera)
+    camera = *request.presetView.camera;
+  if (request.presetView.light)
+    light = *request.presetView.light;
   const auto yaw = numberOption(parser, QStringLiteral("yaw"), camera.yawDeg);
   const auto pitch = numberOption(parser, QStringLiteral("pitch"), camera.pitchDeg);
   const auto distance = numberOption(parser, QStringLiteral("distance"), 0.0);
@@ -301,8 +309,12 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   }
   camera.yawDeg = float(*yaw);
   camera.pitchDeg = float(*pitch);
-  // Framed from these angles as the viewport frames a mesh (key F), unless --distance is given.
-  camera.frame(request.mesh.bounds(), float(request.width) / float(request.height));
+  // Framed from these angles as the viewport frames a mesh (key F), unless --distance is given
+  // or the preset holds the camera exactly as it was saved.
+  const bool savedView = request.presetView.camera && !parser.isSet(QStringLiteral("yaw")) &&
+                         !parser.isSet(QStringLiteral("pitch"));
+  if (!savedView)
+    camera.frame(request.mesh.bounds(), float(request.width) / float(request.height));
   if (*distance > 0.0)
     camera.distance = float(*distance);
   light.azimuthDeg = float(*lightYaw);

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <fstream>
 #include <vector>
@@ -246,6 +248,29 @@ TEST(ImageIO, FailedSaveLeavesNoFileAndNamesThePath) {
   Status saved = saveImage(quantizedPattern(4, 4, 3, 255), path);
   ASSERT_FALSE(saved.ok());
   EXPECT_NE(saved.error().find("out.png"), std::string::npos);
+}
+
+TEST(ImageIO, AFailedSaveLeavesThePreviousFileAsItWas) {
+  const std::string folder = scratchFolder();
+  for (const char* name : {"/keep.png", "/keep.exr", "/keep.tif"}) {
+    const std::string path = folder + name;
+    ASSERT_TRUE(saveImage(quantizedPattern(16, 16, 3, 255), path, SampleFormat::UInt8).ok());
+    std::ifstream in(path, std::ios::binary);
+    const std::string before((std::istreambuf_iterator<char>(in)), {});
+    // Writes beyond 4 KB fail, as on a full disk.
+    rlimit original{};
+    getrlimit(RLIMIT_FSIZE, &original);
+    const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit tiny = original;
+    tiny.rlim_cur = 4096;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &tiny), 0);
+    Status saved = saveImage(quantizedPattern(512, 512, 4, 65535), path, SampleFormat::UInt16);
+    setrlimit(RLIMIT_FSIZE, &original);
+    std::signal(SIGXFSZ, previousHandler);
+    EXPECT_FALSE(saved.ok()) << name;
+    std::ifstream again(path, std::ios::binary);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(again)), {}), before) << name;
+  }
 }
 
 TEST(ImageIO, SaveReplacesAnExistingFile) {

@@ -1,11 +1,18 @@
-// Presets: the bundled samples load whole; a save-and-load round trip keeps everything; bad
-// files are refused or reported with the file's name.
+// Presets: the bundled samples load whole; save -> load -> save is exact and keeps keys this
+// program does not know; bad files are refused or reported with the file's name; version 1
+// migrates; a failed save leaves the old file byte for byte; maps made in the editor are
+// written beside the preset.
 #include "core/ImageIO.h"
 #include "core/MaterialPreset.h"
 #include "support/TestPaths.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
+
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 
@@ -19,64 +26,111 @@ void writeText(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string freshFolder(const std::string& name) {
+  const std::string folder = scratchFolder() + "/" + name;
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
 TEST(MaterialPreset, EverySampleLoadsWithAllItsMaps) {
   for (const char* name : {"bricks", "cobblestones", "tiles"}) {
     Result<LoadedPreset> loaded = loadPreset(samplePreset(name));
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_TRUE(loaded->warnings.empty()) << loaded->warnings.front();
-    const Material& material = loaded->material;
+    const Material& material = loaded->preset.material;
     EXPECT_EQ(material.name(), name);
     for (MapSlot slot : {MapSlot::Color, MapSlot::Normal, MapSlot::Height}) {
       ASSERT_TRUE(material.hasMap(slot)) << name << " " << mapSlotName(slot);
       EXPECT_EQ(material.image(slot)->width(), 1024);
-      EXPECT_EQ(material.image(slot)->height(), 1024);
       EXPECT_EQ(material.image(slot)->colorSpace(), mapSlotColorSpace(slot));
     }
     EXPECT_EQ(material.image(MapSlot::Height)->sourceBitsPerChannel(), 16) << name;
   }
 }
 
-TEST(MaterialPreset, SaveThenLoadKeepsParametersAndMaps) {
+TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   Result<LoadedPreset> original = loadPreset(samplePreset("tiles"));
   ASSERT_TRUE(original.ok()) << original.error();
-  Material material = original->material;
-  material.setParameter(ParamId::Tiling, 3.25);
-  material.setParameter(ParamId::NormalYDown, 1.0);
-  const std::string folder = scratchFolder() + "/saved";
-  std::filesystem::create_directories(folder);
-  const std::string path = folder + "/copy.relief";
-  ASSERT_TRUE(savePreset(material, path).ok());
+  Preset preset = original->preset;
+  preset.material.setParameter(ParamId::Tiling, 3.25);
+  preset.material.setParameter(ParamId::NormalYDown, 1.0);
+  preset.material.setParameter(ParamId::ShadowMode, double(ShadowMode::Hard));
+  preset.compression[std::size_t(MapSlot::Normal)] = {"bc5", "best", false};
+  OrbitCamera camera;
+  camera.yawDeg = -40.0f;
+  camera.target = glm::vec3(0.1f, 0.2f, 0.3f);
+  preset.view.camera = camera;
+  DirectionalLight light;
+  light.azimuthDeg = 210.0f;
+  light.color = glm::vec3(1.0f, 0.5f, 0.25f);
+  preset.view.light = light;
+  preset.view.mesh = "torus";
+  // Keys from a future tool, at every level.
+  preset.preserved.insert(QStringLiteral("pipelineTag"), QStringLiteral("hero-asset"));
+  QJsonObject maps = preset.preserved.value(QStringLiteral("maps")).toObject();
+  QJsonObject color = maps.value(QStringLiteral("color")).toObject();
+  color.insert(QStringLiteral("sourceTool"), QStringLiteral("scanner-7"));
+  maps.insert(QStringLiteral("color"), color);
+  preset.preserved.insert(QStringLiteral("maps"), maps);
 
-  Result<LoadedPreset> reloaded = loadPreset(path);
+  const std::string folder = freshFolder("roundtrip");
+  const std::string first = folder + "/first.relief";
+  ASSERT_TRUE(savePreset(preset, first).ok());
+  Result<LoadedPreset> reloaded = loadPreset(first);
   ASSERT_TRUE(reloaded.ok()) << reloaded.error();
-  EXPECT_TRUE(reloaded->warnings.empty());
-  EXPECT_EQ(reloaded->material.parameters(), material.parameters());
-  EXPECT_EQ(reloaded->material.technique(), material.technique());
+  EXPECT_TRUE(reloaded->warnings.empty()) << reloaded->warnings.front();
+  const Preset& again = reloaded->preset;
+  EXPECT_EQ(again.material.parameters(), preset.material.parameters());
+  EXPECT_EQ(again.material.technique(), preset.material.technique());
+  EXPECT_EQ(again.compression, preset.compression);
+  ASSERT_TRUE(again.view.camera && again.view.light);
+  EXPECT_EQ(again.view.camera->yawDeg, -40.0f);
+  EXPECT_EQ(again.view.camera->target, camera.target);
+  EXPECT_EQ(again.view.light->color, light.color);
+  EXPECT_EQ(again.view.mesh, "torus");
   for (MapSlot slot : kAllMapSlots) {
-    ASSERT_EQ(reloaded->material.hasMap(slot), material.hasMap(slot));
-    if (!material.hasMap(slot))
+    ASSERT_EQ(again.material.hasMap(slot), preset.material.hasMap(slot));
+    if (!preset.material.hasMap(slot))
       continue;
-    EXPECT_EQ(std::filesystem::canonical(reloaded->material.map(slot).sourcePath),
-              std::filesystem::canonical(material.map(slot).sourcePath));
-    EXPECT_EQ(*reloaded->material.image(slot), *material.image(slot));
+    EXPECT_EQ(*again.material.image(slot), *preset.material.image(slot));
   }
+  EXPECT_EQ(again.preserved.value(QStringLiteral("pipelineTag")).toString(),
+            QStringLiteral("hero-asset"));
+
+  // Saved again without changes: the same bytes.
+  const std::string second = folder + "/second.relief";
+  ASSERT_TRUE(savePreset(again, second).ok());
+  EXPECT_EQ(readText(first), readText(second));
+  EXPECT_NE(readText(second).find("scanner-7"), std::string::npos);
 }
 
 TEST(MaterialPreset, RefusesWhatItCannotRead) {
-  const std::string folder = scratchFolder();
+  const std::string folder = freshFolder("refused");
   const struct {
     const char* file;
     const char* text;
     const char* expected;
   } cases[] = {
       {"notjson.relief", "this is not json", "not a valid preset"},
-      {"truncated.relief", "{\"format\": \"relief-material\", \"version\": 1, \"maps\": {",
+      {"truncated.relief", "{\"format\": \"relief-material\", \"version\": 2, \"maps\": {",
        "not a valid preset"},
       {"array.relief", "[1, 2, 3]", "not a JSON object"},
       {"otherformat.relief", "{\"format\": \"something\", \"version\": 1}", "not a Relief preset"},
       {"future.relief", "{\"format\": \"relief-material\", \"version\": 99}", "newer Relief"},
       {"badversion.relief", "{\"format\": \"relief-material\", \"version\": \"one\"}",
        "positive integer"},
+      {"empty.relief", "", "not a valid preset"},
+      // Beyond double range: not a number JSON can hold (Qt's parser says so, with the byte).
+      {"huge.relief",
+       "{\"format\": \"relief-material\", \"version\": 2, \"parameters\": "
+       "{\"tiling\": 1e400}}",
+       "illegal number"},
   };
   for (const auto& c : cases) {
     const std::string path = folder + "/" + c.file;
@@ -90,32 +144,118 @@ TEST(MaterialPreset, RefusesWhatItCannotRead) {
 }
 
 TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
-  const std::string folder = scratchFolder();
+  const std::string folder = freshFolder("partial");
   const std::string path = folder + "/partial.relief";
   const std::string colorPath = test::sourcePath("samples/tiles/tiles_color.png");
   writeText(path,
-            "{\"format\": \"relief-material\", \"version\": 1,"
+            "{\"format\": \"relief-material\", \"version\": 2,"
             " \"maps\": {\"color\": {\"path\": \"" +
                 colorPath +
                 "\"},"
-                "            \"normal\": {\"path\": \"missing_normal.png\"}},"
+                "            \"normal\": {\"path\": \"missing_normal.png\","
+                "                         \"compression\": {\"format\": \"zip\"}}},"
                 " \"technique\": \"warp-drive\","
-                " \"parameters\": {\"tiling\": 500, \"specular\": \"shiny\", \"bogus\": 1}}");
+                " \"parameters\": {\"tiling\": 500, \"specular\": \"shiny\", \"bogus\": 1,"
+                "                  \"heightScale\": 1e300, \"normalYDown\": 3},"
+                " \"view\": {\"camera\": {\"pitch\": \"high\", \"distance\": -4},"
+                "            \"light\": {\"color\": [1, 2]}}}");
   Result<LoadedPreset> loaded = loadPreset(path);
   ASSERT_TRUE(loaded.ok()) << loaded.error();
-  EXPECT_TRUE(loaded->material.hasMap(MapSlot::Color));
-  EXPECT_FALSE(loaded->material.hasMap(MapSlot::Normal));
-  EXPECT_EQ(loaded->material.parameter(ParamId::Tiling), parameterSpec(ParamId::Tiling).maximum);
+  const Material& material = loaded->preset.material;
+  EXPECT_TRUE(material.hasMap(MapSlot::Color));
+  EXPECT_FALSE(material.hasMap(MapSlot::Normal));
+  EXPECT_EQ(material.parameter(ParamId::Tiling), parameterSpec(ParamId::Tiling).maximum);
+  EXPECT_EQ(material.parameter(ParamId::HeightScale), parameterSpec(ParamId::HeightScale).maximum);
   std::string all;
   for (const std::string& warning : loaded->warnings) {
     EXPECT_NE(warning.find("partial.relief"), std::string::npos) << warning;
     all += warning + "\n";
   }
-  EXPECT_NE(all.find("missing_normal.png"), std::string::npos) << all;
-  EXPECT_NE(all.find("warp-drive"), std::string::npos) << all;
-  EXPECT_NE(all.find("tiling"), std::string::npos) << all;
-  EXPECT_NE(all.find("specular"), std::string::npos) << all;
-  EXPECT_NE(all.find("bogus"), std::string::npos) << all;
+  for (const char* mention :
+       {"missing_normal.png", "warp-drive", "tiling", "specular", "bogus", "heightScale",
+        "normalYDown", "zip", "view.camera.pitch", "view.camera.distance", "view.light.color"}) {
+    EXPECT_NE(all.find(mention), std::string::npos) << mention << " not in:\n" << all;
+  }
+}
+
+TEST(MaterialPreset, VersionOneMigrates) {
+  const std::string folder = freshFolder("migrate");
+  const std::string path = folder + "/old.relief";
+  writeText(path,
+            "{\"format\": \"relief-material\", \"version\": 1, \"name\": \"old\","
+            " \"technique\": \"normal\", \"maps\": {},"
+            " \"parameters\": {\"tiling\": 2, \"specular\": 0.5}}");
+  Result<LoadedPreset> loaded = loadPreset(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_EQ(loaded->fileVersion, 1);
+  EXPECT_TRUE(loaded->warnings.empty());
+  EXPECT_EQ(loaded->preset.material.parameter(ParamId::Tiling), 2.0);
+  ASSERT_TRUE(savePreset(loaded->preset, path).ok());
+  const QJsonObject saved =
+      QJsonDocument::fromJson(QByteArray::fromStdString(readText(path))).object();
+  EXPECT_EQ(saved.value(QStringLiteral("version")).toInt(), kPresetVersion);
+  EXPECT_EQ(saved.value(QStringLiteral("parameters"))
+                .toObject()
+                .value(QStringLiteral("specular"))
+                .toDouble(),
+            0.5);
+}
+
+TEST(MaterialPreset, AFailedSaveLeavesThePreviousFileByteForByte) {
+  const std::string folder = freshFolder("atomic");
+  const std::string path = folder + "/keep.relief";
+  Result<LoadedPreset> sample = loadPreset(samplePreset("bricks"));
+  ASSERT_TRUE(sample.ok());
+  Preset preset = sample->preset;
+  ASSERT_TRUE(savePreset(preset, path).ok());
+  const std::string before = readText(path);
+
+  // Make every write beyond 64 bytes fail (as a full disk would), then try to save a changed
+  // preset. Works for root too, where folder permissions would not stop the write.
+  preset.material.setParameter(ParamId::Tiling, 7.0);
+  rlimit original{};
+  getrlimit(RLIMIT_FSIZE, &original);
+  const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit tiny = original;
+  tiny.rlim_cur = 64;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &tiny), 0);
+  Result<SavedPreset> saved = savePreset(preset, path);
+  setrlimit(RLIMIT_FSIZE, &original);
+  std::signal(SIGXFSZ, previousHandler);
+
+  ASSERT_FALSE(saved.ok());
+  EXPECT_NE(saved.error().find("keep.relief"), std::string::npos) << saved.error();
+  EXPECT_EQ(readText(path), before);
+  // And into a folder that does not exist: an error, no file.
+  EXPECT_FALSE(savePreset(preset, folder + "/no/such/folder/x.relief").ok());
+}
+
+TEST(MaterialPreset, MapsMadeInTheEditorAreWrittenBesideThePreset) {
+  const std::string folder = freshFolder("generated");
+  Preset preset;
+  preset.material.setName("made");
+  auto height = std::make_shared<Image>(8, 4, 1);
+  for (std::size_t i = 0; i < height->valueCount(); ++i)
+    height->data()[i] = float(i) / 32.0f;
+  auto deep = std::make_shared<Image>(8, 4, 1);
+  deep->at(3, 1, 0) = 2.5f;  // beyond 0..1: needs EXR
+  preset.material.setMap(MapSlot::Height, height);
+  preset.material.setMap(MapSlot::AmbientOcclusion, deep);
+  const std::string path = folder + "/made.relief";
+  Result<SavedPreset> saved = savePreset(preset, path);
+  ASSERT_TRUE(saved.ok()) << saved.error();
+  ASSERT_EQ(saved->writtenMaps.size(), 2u);
+  EXPECT_TRUE(std::filesystem::exists(folder + "/made_height.png"));
+  EXPECT_TRUE(std::filesystem::exists(folder + "/made_ao.exr"));
+  EXPECT_NE(readText(path).find("\"made_height.png\""), std::string::npos);  // relative
+  Result<LoadedPreset> loaded = loadPreset(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  // 16-bit PNG: the values come back to 1/65535.
+  const Image& back = *loaded->preset.material.image(MapSlot::Height);
+  for (std::size_t i = 0; i < back.valueCount(); ++i) {
+    EXPECT_NEAR(back.data()[i], height->data()[i], 1.0f / 65535.0f);
+  }
+  EXPECT_EQ(loaded->preset.material.image(MapSlot::AmbientOcclusion)->at(3, 1, 0), 2.5f);
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ class SampleRender : public OffscreenTest {
     EXPECT_TRUE(preset.ok()) << preset.error();
     const core::Mesh mesh = core::makePrimitive(shape);
     offscreen().setMesh(mesh);
-    offscreen().setMaterial(preset->material);
+    offscreen().setMaterial(preset->preset.material);
     renderer::RenderView view;
     view.camera = core::defaultCameraFor(mesh, 320.0f / 200.0f);
     core::Result<core::Image> image = offscreen().render(view, 320, 200);
@@ -57,7 +57,7 @@ TEST_F(SampleRender, EveryTechniqueMatchesItsBaseline) {
   view.camera.pitchDeg = 22.0f;
   view.camera.distance = 1.0f;
   for (core::Technique technique : core::allTechniques()) {
-    core::Material material = preset->material;
+    core::Material material = preset->preset.material;
     material.setTechnique(technique);
     offscreen().setMaterial(material);
     core::Result<core::Image> image = offscreen().render(view, 256, 160);
@@ -75,8 +75,8 @@ TEST_F(SampleRender, NormalMapChangesThePicture) {
   const core::Image withNormals = render("cobblestones", core::PrimitiveShape::Plane);
   core::Result<core::LoadedPreset> preset = core::loadPreset(samplePreset("cobblestones"));
   ASSERT_TRUE(preset.ok());
-  preset->material.clearMap(core::MapSlot::Normal);
-  offscreen().setMaterial(preset->material);
+  preset->preset.material.clearMap(core::MapSlot::Normal);
+  offscreen().setMaterial(preset->preset.material);
   renderer::RenderView view;
   view.camera = core::defaultCameraFor(core::makePlane(), 320.0f / 200.0f);
   core::Result<core::Image> flat = offscreen().render(view, 320, 200);

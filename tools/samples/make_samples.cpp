@@ -70,7 +70,9 @@ bool writeSample(const tools::SampleMaterial& sample, const std::filesystem::pat
     }
     material.setMap(map.slot, std::make_shared<core::Image>(image), map.path);
   }
-  if (core::Status saved = core::savePreset(material, base + ".relief"); !saved) {
+  core::Preset preset;
+  preset.material = material;
+  if (auto saved = core::savePreset(preset, base + ".relief"); !saved) {
     std::fprintf(stderr, "make-samples: %s\n", saved.error().c_str());
     return false;
   }
