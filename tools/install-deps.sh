@@ -16,7 +16,13 @@ packages=(
   libgtest-dev libgmock-dev xvfb xauth mesa-utils libgl1-mesa-dri glslang-tools
   # screenshots and independent image readers used while testing
   imagemagick python3-pil python3-numpy
+  # the Khronos glTF validator runs on Node.js (tools/gltf-validator/setup.sh fetches it)
+  nodejs
 )
+# Debian packages npm separately; Node.js from elsewhere (NodeSource) bundles it.
+if ! command -v npm >/dev/null 2>&1; then
+  packages+=(npm)
+fi
 
 if [ "${1:-}" = "--bench" ]; then
   packages+=(python3-opencv)

@@ -11,6 +11,10 @@ std::string sourcePath(const std::string& relative) {
   return std::string(RELIEF_SOURCE_DIR) + "/" + relative;
 }
 
+std::string binaryPath(const std::string& relative) {
+  return std::string(RELIEF_BINARY_DIR) + "/" + relative;
+}
+
 std::string samplePreset(const std::string& name) {
   return sourcePath("samples/" + name + "/" + name + ".relief");
 }

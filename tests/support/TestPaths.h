@@ -7,6 +7,7 @@ namespace relief::test {
 
 std::string sourcePath(const std::string& relative);  // e.g. "samples/bricks/bricks.relief"
 std::string samplePreset(const std::string& name);    // samples/<name>/<name>.relief
+std::string binaryPath(const std::string& relative);  // under the build folder
 // A fresh, empty folder for this test process under the build tree.
 std::string scratchFolder();
 // Where failed image comparisons leave their actual and difference images.

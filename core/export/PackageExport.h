@@ -1,0 +1,30 @@
+// Export as a package: a folder with the material's maps in the chosen file formats and a
+// preset that points at them, ready to copy into another project or hand to a colleague.
+#pragma once
+
+#include "core/MaterialPreset.h"
+#include "core/Result.h"
+
+#include <string>
+
+namespace relief::core {
+
+enum class PackageMapFormat {
+  Png8,   // 8-bit PNG (data maps dithered)
+  Png16,  // 16-bit PNG (the colour map stays 8-bit sRGB)
+  Exr,    // float EXR (the colour map stays 8-bit sRGB PNG)
+};
+
+struct PackageOptions {
+  PackageMapFormat dataMaps = PackageMapFormat::Png16;  // normal, height, AO, roughness
+};
+
+// Writes <folder>/<name>_<slot>.<ext> and <folder>/<name>.relief (creating the folder).
+// Returns the preset's path.
+Result<std::string> exportPackage(const Preset& preset, const std::string& folder,
+                                  const PackageOptions& options = {});
+
+// The file name stem exports use: the material's name, or "material", made safe for files.
+std::string exportStem(const Material& material);
+
+}  // namespace relief::core

@@ -1,0 +1,406 @@
+// Export: a package reloads as the same material; the glTF export is read back field by field
+// against the glTF 2.0 specification and passed through the Khronos validator; the Godot
+// .tres is parsed back and its heightmap settings checked against the offset Godot 4's
+// generated shader computes (docs/export.md).
+#include "core/ImageIO.h"
+#include "core/MaterialPreset.h"
+#include "core/MeshPrimitives.h"
+#include "core/export/EngineConversion.h"
+#include "core/export/GltfExport.h"
+#include "core/export/GodotExport.h"
+#include "core/export/PackageExport.h"
+#include "support/GltfValidator.h"
+#include "support/TestPaths.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+
+namespace relief::core {
+namespace {
+
+std::string freshFolder(const std::string& name) {
+  const std::string folder = test::scratchFolder() + "/" + name;
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+// A small material with analytic maps: a colour ramp, a DirectX-convention normal map that
+// tilts towards +x, a height ramp, and an AO map.
+Preset syntheticPreset() {
+  constexpr int kSize = 16;
+  auto color = std::make_shared<Image>(kSize, kSize, 3, ColorSpace::Srgb);
+  auto normal = std::make_shared<Image>(kSize, kSize, 3);
+  auto height = std::make_shared<Image>(kSize, kSize, 1);
+  auto occlusion = std::make_shared<Image>(kSize, kSize, 1);
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      color->at(x, y, 0) = float(x) / (kSize - 1);
+      color->at(x, y, 1) = float(y) / (kSize - 1);
+      color->at(x, y, 2) = 0.5f;
+      normal->at(x, y, 0) = 0.75f;
+      normal->at(x, y, 1) = 0.25f;  // y down: the surface tilts so that +y is 0.75 in OpenGL
+      normal->at(x, y, 2) = 0.9f;
+      height->at(x, y, 0) = float(x + y * kSize) / (kSize * kSize - 1);
+      occlusion->at(x, y, 0) = 0.5f + 0.5f * float(y) / (kSize - 1);
+    }
+  }
+  Preset preset;
+  preset.material.setName("test brick");  // the space must not reach file names
+  preset.material.setMap(MapSlot::Color, color);
+  preset.material.setMap(MapSlot::Normal, normal);
+  preset.material.setMap(MapSlot::Height, height);
+  preset.material.setMap(MapSlot::AmbientOcclusion, occlusion);
+  preset.material.setTechnique(Technique::Pom);
+  preset.material.setParameter(ParamId::HeightScale, 0.06);
+  preset.material.setParameter(ParamId::HeightBias, -0.06);
+  preset.material.setParameter(ParamId::MinSamples, 12);
+  preset.material.setParameter(ParamId::MaxSamples, 48);
+  preset.material.setParameter(ParamId::Tiling, 2.0);
+  preset.material.setParameter(ParamId::NormalYDown, 1.0);
+  preset.material.setParameter(ParamId::Shininess, 2.0);
+  preset.material.setParameter(ParamId::NormalStrength, 0.8);
+  return preset;
+}
+
+double maxDifference(const Image& a, const Image& b) {
+  EXPECT_EQ(a.width(), b.width());
+  EXPECT_EQ(a.height(), b.height());
+  EXPECT_EQ(a.channels(), b.channels());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < std::min(a.valueCount(), b.valueCount()); ++i)
+    worst = std::max(worst, double(std::abs(a.data()[i] - b.data()[i])));
+  return worst;
+}
+
+TEST(EngineConversion, RoughnessMatchesBlinnPhongLobeWidth) {
+  // alpha^2 = 2 / (n + 2) and alpha = r^2 (Walter et al. 2007; glTF's perceptual roughness).
+  EXPECT_DOUBLE_EQ(roughnessFromShininess(0.0), 1.0);
+  EXPECT_NEAR(roughnessFromShininess(2.0), std::pow(0.5, 0.25), 1e-12);
+  EXPECT_NEAR(roughnessFromShininess(198.0), std::pow(0.01, 0.25), 1e-12);
+  EXPECT_LT(roughnessFromShininess(1000.0), roughnessFromShininess(100.0));
+}
+
+TEST(EngineConversion, DirectXNormalMapsBecomeOpenGL) {
+  Image normal(1, 1, 3);
+  normal.at(0, 0, 1) = 0.2f;
+  EXPECT_FLOAT_EQ(openGlNormalMap(normal, true).at(0, 0, 1), 0.8f);
+  EXPECT_FLOAT_EQ(openGlNormalMap(normal, false).at(0, 0, 1), 0.2f);
+}
+
+TEST(PackageExport, ReloadsAsTheSameMaterial) {
+  const Preset preset = syntheticPreset();
+  for (PackageMapFormat format :
+       {PackageMapFormat::Png8, PackageMapFormat::Png16, PackageMapFormat::Exr}) {
+    const std::string folder = freshFolder("package" + std::to_string(int(format)));
+    Result<std::string> exported = exportPackage(preset, folder, {format});
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    EXPECT_EQ(std::filesystem::path(exported.value()).filename(), "test_brick.relief");
+    Result<LoadedPreset> loaded = loadPreset(exported.value());
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_TRUE(loaded->warnings.empty());
+    const Material& material = loaded->preset.material;
+    EXPECT_EQ(material.parameters(), preset.material.parameters());
+    EXPECT_EQ(material.technique(), Technique::Pom);
+    // Quantisation bounds: half a step of the file's integer format; EXR keeps floats.
+    const double dataTolerance = format == PackageMapFormat::Png8    ? 0.5 / 255 + 1e-6
+                                 : format == PackageMapFormat::Png16 ? 0.5 / 65535 + 1e-7
+                                                                     : 0.0;
+    for (MapSlot slot : {MapSlot::Normal, MapSlot::Height, MapSlot::AmbientOcclusion}) {
+      ASSERT_TRUE(material.hasMap(slot)) << mapSlotName(slot);
+      // 8-bit data maps are dithered: one step at most.
+      const double tolerance = format == PackageMapFormat::Png8 ? 1.0 / 255 + 1e-6 : dataTolerance;
+      EXPECT_LE(maxDifference(*material.image(slot), *preset.material.image(slot)), tolerance)
+          << mapSlotName(slot) << " format " << int(format);
+      // The preset names the file beside it, relative.
+      EXPECT_EQ(std::filesystem::path(material.map(slot).sourcePath).parent_path(),
+                std::filesystem::path(exported.value()).parent_path());
+    }
+    EXPECT_LE(
+        maxDifference(*material.image(MapSlot::Color), *preset.material.image(MapSlot::Color)),
+        0.5 / 255 + 1e-6);
+    const std::string heightFile = material.map(MapSlot::Height).sourcePath;
+    EXPECT_EQ(std::filesystem::path(heightFile).extension(),
+              format == PackageMapFormat::Exr ? ".exr" : ".png");
+  }
+}
+
+TEST(PackageExport, AFolderThatCannotBeMadeIsReportedByName) {
+  // A file where the folder should go fails even for root, unlike permission bits.
+  const std::string blocker = freshFolder("blocked") + "/not-a-folder";
+  std::ofstream(blocker) << "x";
+  Result<std::string> exported = exportPackage(syntheticPreset(), blocker + "/package");
+  ASSERT_FALSE(exported.ok());
+  EXPECT_NE(exported.error().find(blocker), std::string::npos) << exported.error();
+}
+
+QJsonObject readJson(const std::string& path) {
+  QFile file(QString::fromStdString(path));
+  EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << path;
+  return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+std::vector<float> readFloats(const QJsonObject& gltf, const std::string& binary, int accessor) {
+  const QJsonObject a = gltf["accessors"].toArray()[accessor].toObject();
+  const QJsonObject view = gltf["bufferViews"].toArray()[a["bufferView"].toInt()].toObject();
+  EXPECT_EQ(a["componentType"].toInt(), 5126);
+  const int components = a["type"].toString() == "VEC2"   ? 2
+                         : a["type"].toString() == "VEC3" ? 3
+                         : a["type"].toString() == "VEC4" ? 4
+                                                          : 1;
+  const std::size_t count = std::size_t(a["count"].toInt()) * std::size_t(components);
+  const std::size_t offset = std::size_t(view["byteOffset"].toInteger());
+  EXPECT_EQ(offset % 4, 0u) << "glTF requires 4-byte aligned float accessors";
+  EXPECT_EQ(std::size_t(view["byteLength"].toInteger()), count * sizeof(float));
+  std::vector<float> values(count);
+  std::memcpy(values.data(), binary.data() + offset, count * sizeof(float));
+  return values;
+}
+
+TEST(GltfExport, MeshAndMaterialFollowTheSpecification) {
+  const Preset preset = syntheticPreset();
+  const Mesh plane = makePlane(2.0f, 2);
+  const std::string folder = freshFolder("gltf");
+  Result<std::string> exported = exportGltf(preset, plane, folder);
+  ASSERT_TRUE(exported.ok()) << exported.error();
+  const QJsonObject gltf = readJson(exported.value());
+  EXPECT_EQ(gltf["asset"].toObject()["version"].toString(), "2.0");
+
+  const QJsonObject buffer = gltf["buffers"].toArray()[0].toObject();
+  const std::string binPath = folder + "/" + buffer["uri"].toString().toStdString();
+  std::ifstream in(binPath, std::ios::binary);
+  const std::string binary(std::istreambuf_iterator<char>(in), {});
+  EXPECT_EQ(qint64(binary.size()), buffer["byteLength"].toInteger());
+
+  const QJsonObject primitive =
+      gltf["meshes"].toArray()[0].toObject()["primitives"].toArray()[0].toObject();
+  const QJsonObject attributes = primitive["attributes"].toObject();
+  const std::vector<float> positions = readFloats(gltf, binary, attributes["POSITION"].toInt());
+  const std::vector<float> uvs = readFloats(gltf, binary, attributes["TEXCOORD_0"].toInt());
+  const std::vector<float> tangents = readFloats(gltf, binary, attributes["TANGENT"].toInt());
+  ASSERT_EQ(positions.size(), plane.vertices.size() * 3);
+  for (std::size_t i = 0; i < plane.vertices.size(); ++i) {
+    const Vertex& v = plane.vertices[i];
+    EXPECT_FLOAT_EQ(positions[i * 3 + 0], v.position.x);
+    // glTF's texture origin is the image's top-left: v flips; tiling 2 is baked in.
+    EXPECT_FLOAT_EQ(uvs[i * 2 + 0], 2.0f * v.uv.x);
+    EXPECT_FLOAT_EQ(uvs[i * 2 + 1], 1.0f - 2.0f * v.uv.y);
+    EXPECT_EQ(std::abs(tangents[i * 4 + 3]), 1.0f) << "tangent w must be +-1";
+  }
+  const QJsonArray min =
+      gltf["accessors"].toArray()[attributes["POSITION"].toInt()].toObject()["min"].toArray();
+  EXPECT_FLOAT_EQ(float(min[0].toDouble()), -1.0f);
+
+  const QJsonObject material = gltf["materials"].toArray()[0].toObject();
+  const QJsonObject pbr = material["pbrMetallicRoughness"].toObject();
+  EXPECT_DOUBLE_EQ(pbr["metallicFactor"].toDouble(), 0.0);
+  EXPECT_NEAR(pbr["roughnessFactor"].toDouble(), std::pow(0.5, 0.25), 1e-9);
+  EXPECT_NEAR(material["normalTexture"].toObject()["scale"].toDouble(), 0.8, 1e-9);
+
+  // The normal texture is in glTF's +Y-up convention: the DirectX green 0.25 becomes 0.75.
+  const QJsonArray images = gltf["images"].toArray();
+  const QJsonArray textures = gltf["textures"].toArray();
+  const auto imageOf = [&](const QJsonObject& textureInfo) {
+    const int source = textures[textureInfo["index"].toInt()].toObject()["source"].toInt();
+    return folder + "/" + images[source].toObject()["uri"].toString().toStdString();
+  };
+  Result<Image> normal = loadImage(imageOf(material["normalTexture"].toObject()));
+  ASSERT_TRUE(normal.ok()) << normal.error();
+  EXPECT_NEAR(normal->at(3, 3, 1), 0.75f, 1.0f / 255);
+  Result<Image> color = loadImage(imageOf(pbr["baseColorTexture"].toObject()));
+  ASSERT_TRUE(color.ok()) << color.error();
+  EXPECT_EQ(color->colorSpace(), ColorSpace::Srgb);
+
+  // Parallax lives in extras: every parameter by name and the height image.
+  const QJsonObject relief = material["extras"].toObject()["relief"].toObject();
+  EXPECT_EQ(relief["technique"].toString(), "pom");
+  EXPECT_NEAR(relief["parameters"].toObject()["heightScale"].toDouble(), 0.06, 1e-12);
+  EXPECT_EQ(relief["parameters"].toObject().size(), qsizetype(allParameters().size()));
+  Result<Image> height = loadImage(folder + "/" + relief["heightImage"].toString().toStdString());
+  ASSERT_TRUE(height.ok()) << height.error();
+  EXPECT_LE(maxDifference(height.value(), *preset.material.image(MapSlot::Height)),
+            0.5 / 65535 + 1e-7);
+}
+
+TEST(GltfExport, KhronosValidatorFindsNoErrors) {
+  const std::string folder = freshFolder("gltf-validate");
+  for (const char* shape : {"plane", "sphere", "torus"}) {
+    Result<std::string> exported = exportGltf(
+        syntheticPreset(), makePrimitive(*findPrimitiveShape(shape)), folder + "/" + shape);
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    const test::GltfValidation validation = test::validateGltf(exported.value());
+    if (!validation.available)
+      GTEST_SKIP() << "glTF validator unavailable: " << validation.unavailableReason;
+    EXPECT_EQ(validation.errors, 0) << shape << "\n" << validation.report;
+    // Warnings are allowed by the issue, but the export should not produce any either.
+    EXPECT_EQ(validation.warnings, 0) << shape << "\n" << validation.report;
+  }
+  // Control: the validator, as wired here, does report a broken file (a buffer longer than its
+  // .bin), so the zero above means something.
+  const std::string broken = folder + "/plane/broken.gltf";
+  QJsonObject gltf = readJson(folder + "/plane/test_brick.gltf");
+  QJsonArray buffers = gltf["buffers"].toArray();
+  QJsonObject buffer = buffers[0].toObject();
+  buffer["byteLength"] = buffer["byteLength"].toInteger() + 64;
+  buffers[0] = buffer;
+  gltf["buffers"] = buffers;
+  QFile file(QString::fromStdString(broken));
+  ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+  file.write(QJsonDocument(gltf).toJson());
+  file.close();
+  EXPECT_GT(test::validateGltf(broken).errors, 0);
+}
+
+TEST(GltfExport, AnEmptyMeshIsRefused) {
+  Result<std::string> exported = exportGltf(syntheticPreset(), Mesh{}, freshFolder("empty"));
+  ASSERT_FALSE(exported.ok());
+  EXPECT_NE(exported.error().find("empty"), std::string::npos);
+}
+
+// A reader for Godot's text resource format, written from the format's documentation: section
+// headers in brackets with key=value attributes, then `key = value` property lines.
+struct GodotResource {
+  std::map<std::string, std::string> header;
+  std::vector<std::map<std::string, std::string>> extResources;
+  std::map<std::string, std::string> properties;
+};
+
+std::map<std::string, std::string> parseAttributes(const std::string& text) {
+  std::map<std::string, std::string> attributes;
+  static const std::regex attribute(R"re((\w+)=("[^"]*"|\S+))re");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), attribute);
+       it != std::sregex_iterator(); ++it) {
+    std::string value = (*it)[2];
+    if (value.size() >= 2 && value.front() == '"')
+      value = value.substr(1, value.size() - 2);
+    attributes[(*it)[1]] = value;
+  }
+  return attributes;
+}
+
+GodotResource parseTres(const std::string& path) {
+  GodotResource resource;
+  std::ifstream in(path);
+  std::string line, section;
+  static const std::regex header(R"re(^\[(\w+)(.*)\]$)re");
+  static const std::regex property(R"re(^(\w+) = (.+)$)re");
+  std::smatch match;
+  while (std::getline(in, line)) {
+    if (std::regex_match(line, match, header)) {
+      section = match[1];
+      if (section == "gd_resource")
+        resource.header = parseAttributes(match[2]);
+      else if (section == "ext_resource")
+        resource.extResources.push_back(parseAttributes(match[2]));
+    } else if (section == "resource" && std::regex_match(line, match, property)) {
+      resource.properties[match[1]] = match[2];
+    } else {
+      EXPECT_TRUE(line.empty()) << "unexpected line in " << path << ": " << line;
+    }
+  }
+  return resource;
+}
+
+// Godot 4's generated StandardMaterial3D shader (scene/resources/material.cpp) offsets the
+// texture coordinates by view.xy * depth * heightmap_scale * 0.01, depth = 1 - h (or h when
+// heightmap_flip_texture). Relief's surface lies s = h * scale + bias above the mesh, so with
+// bias = -scale a point of depth d = 1 - h lies d * scale below it and is seen
+// view.xy / view.z * d * scale away (references 000, 001). The two agree head-on (view.z -> 1).
+TEST(GodotExport, TresParsesBackWithHeightmapSettingsConverted) {
+  const Preset preset = syntheticPreset();
+  const std::string folder = freshFolder("godot");
+  Result<GodotExportResult> exported = exportGodot(preset, folder);
+  ASSERT_TRUE(exported.ok()) << exported.error();
+  const GodotResource tres = parseTres(exported->tresPath);
+  EXPECT_EQ(tres.header.at("type"), "StandardMaterial3D");
+  EXPECT_EQ(tres.header.at("format"), "3");
+  EXPECT_EQ(std::stoi(tres.header.at("load_steps")), int(tres.extResources.size()) + 1);
+
+  // Every ExtResource reference names a declared texture whose file exists beside the .tres.
+  std::map<std::string, std::string> files;
+  for (const auto& ext : tres.extResources) {
+    EXPECT_EQ(ext.at("type"), "Texture2D");
+    files[ext.at("id")] = ext.at("path");
+    EXPECT_TRUE(std::filesystem::exists(folder + "/" + ext.at("path"))) << ext.at("path");
+  }
+  const auto texture = [&](const std::string& key) -> std::string {
+    static const std::regex reference(R"re(^ExtResource\("([^"]+)"\)$)re");
+    std::smatch m;
+    const std::string value = tres.properties.count(key) ? tres.properties.at(key) : "";
+    if (!std::regex_match(value, m, reference))
+      return "";
+    EXPECT_TRUE(files.count(m[1])) << key << " references undeclared " << m[1];
+    return files[m[1]];
+  };
+  const auto& p = tres.properties;
+  EXPECT_FALSE(texture("albedo_texture").empty());
+  EXPECT_EQ(p.at("normal_enabled"), "true");
+  EXPECT_NEAR(std::stod(p.at("normal_scale")), 0.8, 1e-6);
+  EXPECT_EQ(p.at("ao_enabled"), "true");
+  EXPECT_NEAR(std::stod(p.at("roughness")), std::pow(0.5, 0.25), 1e-5);
+  EXPECT_EQ(p.at("heightmap_enabled"), "true");
+  EXPECT_EQ(p.at("heightmap_deep_parallax"), "true");  // POM marches, as Godot's deep parallax
+  EXPECT_EQ(p.at("heightmap_min_layers"), "12");
+  EXPECT_EQ(p.at("heightmap_max_layers"), "48");
+  EXPECT_EQ(p.at("heightmap_flip_texture"), "false");
+  EXPECT_EQ(p.at("uv1_scale"), "Vector3(2.0, 2.0, 1.0)");
+
+  // The parallax offset Godot computes matches Relief's head-on, within 0.1 %.
+  const double godotScale = std::stod(p.at("heightmap_scale"));
+  const double viewX = 0.02, viewZ = std::sqrt(1.0 - viewX * viewX);
+  const double depth = 0.7;
+  const double godotOffset = viewX * depth * godotScale * 0.01;
+  const double reliefOffset = viewX / viewZ * depth * 0.06;
+  EXPECT_NEAR(godotOffset, reliefOffset, 1e-3 * reliefOffset);
+
+  // Normal map converted to Godot's OpenGL convention, height kept at 16 bits.
+  Result<Image> normal = loadImage(folder + "/" + texture("normal_texture"));
+  ASSERT_TRUE(normal.ok()) << normal.error();
+  EXPECT_NEAR(normal->at(0, 0, 1), 0.75f, 1.0f / 255);
+  Result<ImageFileInfo> height = readImageInfo(folder + "/" + texture("heightmap_texture"));
+  ASSERT_TRUE(height.ok()) << height.error();
+  EXPECT_EQ(height->bitsPerChannel, 16);
+  EXPECT_TRUE(exported->notes.size() >= 1);  // Godot's offset-limited deep parallax
+}
+
+TEST(GodotExport, DepthMapsFlipAndSimpleParallaxIsNotDeep) {
+  Preset preset = syntheticPreset();
+  preset.material.setTechnique(Technique::ParallaxLimited);
+  preset.material.setParameter(ParamId::HeightIsDepth, 1.0);
+  preset.material.setParameter(ParamId::HeightBias, 0.0);
+  Result<GodotExportResult> exported = exportGodot(preset, freshFolder("godot-flat"));
+  ASSERT_TRUE(exported.ok()) << exported.error();
+  const GodotResource tres = parseTres(exported->tresPath);
+  EXPECT_EQ(tres.properties.at("heightmap_deep_parallax"), "false");
+  EXPECT_EQ(tres.properties.count("heightmap_min_layers"), 0u);
+  EXPECT_EQ(tres.properties.at("heightmap_flip_texture"), "true");
+  // A bias that does not put the top on the surface cannot be expressed: the user is told.
+  bool biasNoted = false;
+  for (const std::string& note : exported->notes)
+    biasNoted = biasNoted || note.find("heightBias") != std::string::npos;
+  EXPECT_TRUE(biasNoted);
+}
+
+TEST(GodotExport, NormalMappingOnlyLeavesHeightOff) {
+  Preset preset = syntheticPreset();
+  preset.material.setTechnique(Technique::Normal);
+  Result<GodotExportResult> exported = exportGodot(preset, freshFolder("godot-normal"));
+  ASSERT_TRUE(exported.ok()) << exported.error();
+  const GodotResource tres = parseTres(exported->tresPath);
+  EXPECT_EQ(tres.properties.count("heightmap_enabled"), 0u);
+  EXPECT_EQ(tres.properties.at("normal_enabled"), "true");
+}
+
+}  // namespace
+}  // namespace relief::core
