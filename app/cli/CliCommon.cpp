@@ -1,6 +1,11 @@
 // CliCommon; see CliCommon.h.
 #include "CliCommon.h"
 
+#include "core/MeshImport.h"
+#include "core/MeshPrimitives.h"
+
+#include <QFileInfo>
+
 #include <cmath>
 #include <cstdio>
 
@@ -57,6 +62,26 @@ std::optional<double> numberOption(const QCommandLineParser& parser, const QStri
     return std::nullopt;
   }
   return value;
+}
+
+std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh) {
+  const std::string name = meshName.isEmpty() ? std::string("plane") : meshName.toStdString();
+  if (const auto shape = core::findPrimitiveShape(name)) {
+    mesh = core::makePrimitive(*shape);
+    return std::nullopt;
+  }
+  if (QFileInfo(meshName).suffix().isEmpty() && !QFileInfo::exists(meshName)) {
+    printError(QStringLiteral("--mesh %1: expected %2, or a mesh file")
+                   .arg(meshName, enumNames(core::allPrimitiveShapes(), core::primitiveShapeName)));
+    return kExitUsage;
+  }
+  core::Result<core::ImportedMesh> imported = core::importMesh(name);
+  if (!imported) {
+    printError(QString::fromStdString(imported.error()));
+    return kExitFailure;
+  }
+  mesh = std::move(imported->mesh);
+  return std::nullopt;
 }
 
 }  // namespace relief::cli

@@ -1,11 +1,15 @@
 // Shared pieces of relief-cli's commands: exit codes, printing, argument parsing helpers.
 #pragma once
 
+#include "core/Mesh.h"
+
 #include <QCommandLineParser>
 #include <QString>
 #include <QStringList>
 
 #include <optional>
+#include <span>
+#include <string_view>
 
 namespace relief::cli {
 
@@ -28,5 +32,20 @@ std::optional<int> parseOrExit(QCommandLineParser& parser, const QStringList& ar
 // Parses a number option; prints an error naming the option and returns nullopt when bad.
 std::optional<double> numberOption(const QCommandLineParser& parser, const QString& name,
                                    double fallback);
+
+// A mesh by --mesh's value: a primitive's name (plane, cube, ...) or a mesh file; an empty
+// name is the plane. Returns an exit code after printing the problem when it cannot be had.
+std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh);
+
+// An enum's value names joined with '|', for help and error texts.
+template <class Enum, class NameOf>
+QString enumNames(std::span<const Enum> values, NameOf nameOf) {
+  QStringList result;
+  for (Enum value : values) {
+    const std::string_view name = nameOf(value);
+    result << QString::fromUtf8(name.data(), qsizetype(name.size()));
+  }
+  return result.join(QStringLiteral("|"));
+}
 
 }  // namespace relief::cli

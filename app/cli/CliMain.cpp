@@ -1,7 +1,9 @@
 // relief-cli: Relief's command-line twin. Dispatches to one command per verb.
 #include "CliCommon.h"
+#include "ExportCommand.h"
 #include "GenerateCommand.h"
 #include "InfoCommand.h"
+#include "PresetCommand.h"
 #include "RenderCommand.h"
 
 #include <QCoreApplication>
@@ -18,6 +20,8 @@ const char* kUsage =
     "  generate Make maps from other maps: normal, height, height-from-color, ao,\n"
     "           curvature, pack\n"
     "  info     Print an image's size, channels, bit depth and colour space\n"
+    "  preset   validate FILE: check a .relief preset; info FILE: print what it holds\n"
+    "  export   Export a preset as a package, glTF 2.0 or a Godot 4 material\n"
     "\n"
     "Run 'relief-cli <command> --help' for a command's options.\n";
 
@@ -39,6 +43,10 @@ int main(int argc, char* argv[]) {
     return runInfo(QCoreApplication::arguments());
   if (command == QStringLiteral("generate"))
     return runGenerate(QCoreApplication::arguments());
+  if (command == QStringLiteral("preset"))
+    return runPreset(QCoreApplication::arguments());
+  if (command == QStringLiteral("export"))
+    return runExport(QCoreApplication::arguments());
   printError(QStringLiteral("unknown command '%1'").arg(command));
   printOut(QString::fromUtf8(kUsage));
   return kExitUsage;

@@ -37,16 +37,6 @@ QString parameterHelp() {
 // The error view's colour scale in PNG output: a quarter texel and more is red.
 constexpr double kErrorDisplayTexels = 0.25;
 
-template <class Enum, class NameOf>
-QString enumNames(std::span<const Enum> values, NameOf nameOf) {
-  QStringList result;
-  for (Enum value : values) {
-    const std::string_view name = nameOf(value);
-    result << QString::fromUtf8(name.data(), qsizetype(name.size()));
-  }
-  return result.join(QStringLiteral("|"));
-}
-
 struct RenderRequest {
   core::Material material;
   core::Mesh mesh;
@@ -262,20 +252,8 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   const QString meshName = parser.isSet(QStringLiteral("mesh")) || request.presetView.mesh.empty()
                                ? parser.value(QStringLiteral("mesh"))
                                : QString::fromStdString(request.presetView.mesh);
-  if (const auto shape = core::findPrimitiveShape(meshName.toStdString())) {
-    request.mesh = core::makePrimitive(*shape);
-  } else if (QFileInfo(meshName).suffix().isEmpty() && !QFileInfo::exists(meshName)) {
-    printError(QStringLiteral("--mesh %1: expected %2, or a mesh file")
-                   .arg(meshName, enumNames(core::allPrimitiveShapes(), core::primitiveShapeName)));
-    return kExitUsage;
-  } else {
-    core::Result<core::ImportedMesh> imported = core::importMesh(meshName.toStdString());
-    if (!imported) {
-      printError(QString::fromStdString(imported.error()));
-      return kExitFailure;
-    }
-    request.mesh = std::move(imported->mesh);
-  }
+  if (auto exit = resolveMesh(meshName, request.mesh))
+    return *exit;
 
   static const QRegularExpression sizePattern(QStringLiteral("^(\\d{1,5})x(\\d{1,5})$"));
   const QRegularExpressionMatch size = sizePattern.match(parser.value(QStringLiteral("size")));

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 namespace relief::test {
@@ -393,8 +394,127 @@ TEST(Cli, EditorWithoutADisplaySaysSoInsteadOfCrashing) {
   }
 }
 
+TEST(Cli, PresetValidateAcceptsTheSamples) {
+  for (const char* name : {"bricks", "cobblestones", "tiles"}) {
+    CliRun run =
+        runCli({QStringLiteral("preset"), QStringLiteral("validate"), q(samplePreset(name))});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("valid"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("height 1024x1024"), std::string::npos) << run.out;
+  }
+}
+
+TEST(Cli, PresetValidateNamesTheFileAndEveryProblem) {
+  const std::string folder = scratchFolder() + "/validate";
+  std::filesystem::create_directories(folder);
+  const struct {
+    const char* file;
+    std::string text;
+    const char* problem;
+  } cases[] = {
+      {"notjson.relief", "this is not json", "not a valid preset"},
+      {"truncated.relief", "{\"format\": \"relief-material\", \"version\": 2, \"maps\": {",
+       "not a valid preset"},
+      {"future.relief", "{\"format\": \"relief-material\", \"version\": 99}", "newer Relief"},
+      {"missingmap.relief",
+       "{\"format\": \"relief-material\", \"version\": 2,"
+       " \"maps\": {\"height\": {\"path\": \"gone_height.png\"}}}",
+       "gone_height.png"},
+      {"wrongtype.relief",
+       "{\"format\": \"relief-material\", \"version\": 2,"
+       " \"parameters\": {\"heightScale\": \"deep\"}}",
+       "heightScale"},
+      {"range.relief",
+       "{\"format\": \"relief-material\", \"version\": 2, \"parameters\": {\"tiling\": 1e300}}",
+       "tiling"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = folder + "/" + c.file;
+    writeBytes(path, c.text);
+    CliRun run = runCli({QStringLiteral("preset"), QStringLiteral("validate"), q(path)});
+    expectCleanFailure(run, path, c.problem);
+    EXPECT_EQ(run.exitCode, 1) << c.file;
+  }
+}
+
+TEST(Cli, PresetInfoPrintsParametersMapsAndView) {
+  CliRun run = runCli({QStringLiteral("preset"), QStringLiteral("info"), q(samplePreset("tiles"))});
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  for (const char* expected :
+       {"technique: pom", "heightScale", "tiling", "tiles_height.png", "16 bit", "srgb"}) {
+    EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " in\n" << run.out;
+  }
+  CliRun bad =
+      runCli({QStringLiteral("preset"), QStringLiteral("explain"), q(samplePreset("tiles"))});
+  EXPECT_EQ(bad.exitCode, 2);
+}
+
+TEST(Cli, ExportWritesEachKindFromASample) {
+  const std::string folder = scratchFolder() + "/export";
+  CliRun package =
+      runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(samplePreset("tiles")),
+              QStringLiteral("--to"), QStringLiteral("package"), QStringLiteral("--out"),
+              q(folder + "/package"), QStringLiteral("--maps"), QStringLiteral("exr")});
+  EXPECT_EQ(package.exitCode, 0) << package.err;
+  // The package's preset is itself valid and points at the copied maps.
+  CliRun check = runCli(
+      {QStringLiteral("preset"), QStringLiteral("validate"), q(folder + "/package/tiles.relief")});
+  EXPECT_EQ(check.exitCode, 0) << check.err;
+  EXPECT_TRUE(std::filesystem::exists(folder + "/package/tiles_height.exr"));
+
+  CliRun gltf =
+      runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(samplePreset("tiles")),
+              QStringLiteral("--to"), QStringLiteral("gltf"), QStringLiteral("--out"),
+              q(folder + "/gltf"), QStringLiteral("--mesh"), QStringLiteral("cube")});
+  EXPECT_EQ(gltf.exitCode, 0) << gltf.err;
+  EXPECT_TRUE(std::filesystem::exists(folder + "/gltf/tiles.gltf"));
+  EXPECT_TRUE(std::filesystem::exists(folder + "/gltf/tiles.bin"));
+
+  CliRun godot = runCli({QStringLiteral("export"), QStringLiteral("--preset"),
+                         q(samplePreset("tiles")), QStringLiteral("--to"), QStringLiteral("godot"),
+                         QStringLiteral("--out"), q(folder + "/godot")});
+  EXPECT_EQ(godot.exitCode, 0) << godot.err;
+  EXPECT_NE(readBytes(folder + "/godot/tiles.tres").find("heightmap_scale = 1.5"),
+            std::string::npos);  // tiles: heightScale 0.015
+}
+
+TEST(Cli, ExportRefusesBadRequests) {
+  const std::string folder = scratchFolder() + "/export-bad";
+  CliRun noKind = runCli({QStringLiteral("export"), QStringLiteral("--preset"),
+                          q(samplePreset("tiles")), QStringLiteral("--out"), q(folder)});
+  EXPECT_EQ(noKind.exitCode, 2);
+  EXPECT_NE(noKind.err.find("--to"), std::string::npos) << noKind.err;
+  CliRun badKind =
+      runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(samplePreset("tiles")),
+              QStringLiteral("--to"), QStringLiteral("fbx"), QStringLiteral("--out"), q(folder)});
+  EXPECT_EQ(badKind.exitCode, 2);
+  const std::string missing = folder + "/absent.relief";
+  CliRun noPreset =
+      runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(missing),
+              QStringLiteral("--to"), QStringLiteral("godot"), QStringLiteral("--out"), q(folder)});
+  expectCleanFailure(noPreset, missing, "absent.relief");
+  // --strict refuses a preset with a missing map; without it the rest is exported.
+  std::filesystem::create_directories(folder);
+  const std::string partial = folder + "/partial.relief";
+  writeBytes(partial,
+             "{\"format\": \"relief-material\", \"version\": 2, \"maps\": {\"color\": "
+             "{\"path\": \"" +
+                 sourcePath("samples/tiles/tiles_color.png") +
+                 "\"}, \"height\": {\"path\": \"gone.png\"}}}");
+  CliRun strict = runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(partial),
+                          QStringLiteral("--to"), QStringLiteral("godot"), QStringLiteral("--out"),
+                          q(folder + "/strict"), QStringLiteral("--strict")});
+  expectCleanFailure(strict, partial, "gone.png");
+  CliRun lenient = runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(partial),
+                           QStringLiteral("--to"), QStringLiteral("godot"), QStringLiteral("--out"),
+                           q(folder + "/lenient")});
+  EXPECT_EQ(lenient.exitCode, 0) << lenient.err;
+  EXPECT_NE(lenient.err.find("warning"), std::string::npos) << lenient.err;
+}
+
 TEST(Cli, EveryCommandHasHelp) {
-  for (const QString& command : {QStringLiteral("render"), QStringLiteral("info")}) {
+  for (const QString& command :
+       {QStringLiteral("render"), QStringLiteral("info"), QStringLiteral("export")}) {
     CliRun run = runCli({command, QStringLiteral("--help")});
     EXPECT_EQ(run.exitCode, 0) << command.toStdString();
     EXPECT_NE(run.out.find("Usage: relief-cli " + command.toStdString()), std::string::npos)
