@@ -258,5 +258,34 @@ TEST(MaterialPreset, MapsMadeInTheEditorAreWrittenBesideThePreset) {
   EXPECT_EQ(loaded->preset.material.image(MapSlot::AmbientOcclusion)->at(3, 1, 0), 2.5f);
 }
 
+TEST(MaterialPreset, TheDocumentedExampleLoadsWithoutWarnings) {
+  // The first ```json block of docs/preset-format.md, beside copies of the bricks maps.
+  const std::string doc = readText(test::sourcePath("docs/preset-format.md"));
+  const std::size_t start = doc.find("```json\n");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t end = doc.find("```", start + 8);
+  const std::string folder = freshFolder("documented");
+  for (const char* slot : {"color", "normal", "height"}) {
+    const std::string file = std::string("bricks_") + slot + ".png";
+    std::filesystem::copy_file(test::sourcePath("samples/bricks/" + file), folder + "/" + file);
+  }
+  writeText(folder + "/example.relief", doc.substr(start + 8, end - start - 8));
+  Result<LoadedPreset> loaded = loadPreset(folder + "/example.relief");
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  for (const std::string& warning : loaded->warnings)
+    ADD_FAILURE() << warning;
+  const Preset& preset = loaded->preset;
+  EXPECT_EQ(preset.material.technique(), Technique::Pom);
+  EXPECT_EQ(preset.compression[std::size_t(MapSlot::Normal)].format, "bc5");
+  ASSERT_TRUE(preset.view.light.has_value());
+  EXPECT_FLOAT_EQ(preset.view.light->color.g, 0.97f);
+  // Every parameter core declares is in the example, so the page cannot fall behind.
+  for (const ParameterSpec& spec : allParameters()) {
+    EXPECT_NE(doc.find("\"" + std::string(spec.name) + "\""), std::string::npos) << spec.name;
+  }
+  for (std::string_view format : compressionFormatNames())
+    EXPECT_NE(doc.find("`" + std::string(format) + "`"), std::string::npos) << format;
+}
+
 }  // namespace
 }  // namespace relief::core
