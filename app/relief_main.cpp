@@ -3,7 +3,9 @@
 #include "DisplayCheck.h"
 #include "SampleLocator.h"
 #include "renderer/OpenGLProbe.h"
+#include "ui/AppSettings.h"
 #include "ui/DarkTheme.h"
+#include "ui/DocumentFiles.h"
 #include "ui/MainWindow.h"
 
 #include <QAction>
@@ -62,14 +64,18 @@ int main(int argc, char* argv[]) {
   }
 
   ui::MainWindow window;
+  window.setBundledPresetFolder(app::samplesDirectory());
   window.show();
   QStringList files = parser.positionalArguments();
-  if (files.isEmpty()) {
+  if (files.isEmpty() && ui::settings::openSampleOnStart()) {
     const QString sample = app::defaultSamplePreset();
     if (!sample.isEmpty())
       files << sample;
   }
   window.openFiles(files);
+  // After a crash: offer the autosaved work (once the window is up, so the prompt has a parent).
+  if (!parser.isSet(screenshot))
+    QTimer::singleShot(0, &window, [&window] { window.files()->offerRecovery(); });
   if (parser.isSet(compare))
     window.compareAction()->setChecked(true);
   if (parser.isSet(view)) {

@@ -224,8 +224,19 @@ QJsonObject migrate(QJsonObject root, int fromVersion) {
   return root;
 }
 
+// A float as the shortest decimal that reads back as the same float, so files say 0.12 and
+// not 0.11999999731779099 (the float's exact double value).
+double tidy(float value) {
+  for (int digits = 6; digits <= 9; ++digits) {
+    const double shorter = QString::number(double(value), 'g', digits).toDouble();
+    if (float(shorter) == value)
+      return shorter;
+  }
+  return double(value);
+}
+
 QJsonArray toJson(const glm::vec3& v) {
-  return QJsonArray{double(v.x), double(v.y), double(v.z)};
+  return QJsonArray{tidy(v.x), tidy(v.y), tidy(v.z)};
 }
 
 // Values outside 0..1 (EXR heights, say) would be clipped by a PNG.
@@ -380,20 +391,20 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
   if (preset.view.camera) {
     const OrbitCamera& c = *preset.view.camera;
     view.insert(QStringLiteral("camera"),
-                QJsonObject{{QStringLiteral("yaw"), double(c.yawDeg)},
-                            {QStringLiteral("pitch"), double(c.pitchDeg)},
-                            {QStringLiteral("distance"), double(c.distance)},
-                            {QStringLiteral("fov"), double(c.fovYDeg)},
+                QJsonObject{{QStringLiteral("yaw"), tidy(c.yawDeg)},
+                            {QStringLiteral("pitch"), tidy(c.pitchDeg)},
+                            {QStringLiteral("distance"), tidy(c.distance)},
+                            {QStringLiteral("fov"), tidy(c.fovYDeg)},
                             {QStringLiteral("target"), toJson(c.target)}});
   }
   if (preset.view.light) {
     const DirectionalLight& l = *preset.view.light;
     view.insert(QStringLiteral("light"),
-                QJsonObject{{QStringLiteral("azimuth"), double(l.azimuthDeg)},
-                            {QStringLiteral("elevation"), double(l.elevationDeg)},
+                QJsonObject{{QStringLiteral("azimuth"), tidy(l.azimuthDeg)},
+                            {QStringLiteral("elevation"), tidy(l.elevationDeg)},
                             {QStringLiteral("color"), toJson(l.color)},
-                            {QStringLiteral("intensity"), double(l.intensity)},
-                            {QStringLiteral("ambient"), double(l.ambient)}});
+                            {QStringLiteral("intensity"), tidy(l.intensity)},
+                            {QStringLiteral("ambient"), tidy(l.ambient)}});
   }
   if (view.isEmpty()) {
     root.remove(QStringLiteral("view"));

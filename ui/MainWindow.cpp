@@ -5,22 +5,33 @@
 #include "core/MaterialPreset.h"
 #include "core/MeshImport.h"
 #include "core/MeshPrimitives.h"
+#include "core/export/PackageExport.h"
+#include "renderer/OffscreenRenderer.h"
+#include "ui/AppSettings.h"
+#include "ui/DocumentFiles.h"
+#include "ui/ExportDialog.h"
 #include "ui/GeneratePanel.h"
 #include "ui/LightPanel.h"
 #include "ui/MapsPanel.h"
 #include "ui/MaterialDocument.h"
 #include "ui/ParameterPanel.h"
+#include "ui/PreferencesDialog.h"
+#include "ui/PresetLibrary.h"
 #include "ui/QtText.h"
+#include "ui/ShortcutsDialog.h"
 #include "ui/ViewportWidget.h"
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFormLayout>
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
@@ -28,6 +39,8 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QScrollArea>
+#include <QSettings>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoView>
@@ -62,6 +75,13 @@ MainWindow::MainWindow(QWidget* parent)
   setAcceptDrops(true);
   setCentralWidget(m_viewport);
   setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+  m_files = new DocumentFiles(
+      m_document, this,
+      {[this] { return currentView(); }, [this](const core::PresetView& view) { applyView(view); },
+       [this] { applyDefaultView(); }});
+  connect(
+      m_files, &DocumentFiles::statusMessage, this,
+      [this](const QString& message, int timeout) { statusBar()->showMessage(message, timeout); });
   createDocks();
   createToolBar();
   createMenus();
@@ -96,7 +116,11 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
   connect(m_document, &MaterialDocument::materialReset, this, &MainWindow::updateTitle);
+  connect(m_document, &MaterialDocument::fileSaved, this, &MainWindow::updateTitle);
+  m_viewport->setLight(settings::viewportLight());
   resize(1400, 860);
+  restoreWindowState();
+  updateTitle();
 }
 
 MainWindow::~MainWindow() {
@@ -126,7 +150,8 @@ void MainWindow::createDocks() {
   QDockWidget* parametersDock = addDock(tr("Parameters"), QStringLiteral("parametersDock"),
                                         m_parameters, Qt::RightDockWidgetArea);
   m_light = new LightPanel(m_viewport);
-  addDock(tr("Light"), QStringLiteral("lightDock"), m_light, Qt::LeftDockWidgetArea);
+  QDockWidget* lightDock =
+      addDock(tr("Light"), QStringLiteral("lightDock"), m_light, Qt::LeftDockWidgetArea);
   m_generate = new GeneratePanel(m_document);
   QDockWidget* generateDock =
       addDock(tr("Generate"), QStringLiteral("generateDock"), m_generate, Qt::RightDockWidgetArea);
@@ -134,10 +159,20 @@ void MainWindow::createDocks() {
   history->setEmptyLabel(tr("<opened>"));
   QDockWidget* historyDock =
       addDock(tr("History"), QStringLiteral("historyDock"), history, Qt::RightDockWidgetArea);
+  m_library = new PresetLibrary(m_document);
+  QDockWidget* libraryDock =
+      addDock(tr("Presets"), QStringLiteral("presetsDock"), m_library, Qt::LeftDockWidgetArea);
+  connect(m_library, &PresetLibrary::openRequested, this, &MainWindow::openPreset);
+  connect(m_library, &PresetLibrary::saveCurrentRequested, this, &MainWindow::saveToLibrary);
+  connect(
+      m_library, &PresetLibrary::statusMessage, this,
+      [this](const QString& message, int timeout) { statusBar()->showMessage(message, timeout); });
+  tabifyDockWidget(lightDock, libraryDock);
+  lightDock->raise();
   tabifyDockWidget(parametersDock, historyDock);
   tabifyDockWidget(parametersDock, generateDock);
   parametersDock->raise();
-  resizeDocks({parametersDock}, {380}, Qt::Horizontal);
+  resizeDocks({parametersDock, lightDock}, {380, 330}, Qt::Horizontal);
   connect(m_maps, &MapsPanel::loadRequested, this,
           [this](core::MapSlot slot) { chooseMapFile(slot); });
 }
@@ -172,7 +207,7 @@ void MainWindow::createToolBar() {
   m_meshBox->setToolTip(tr("The mesh the material is shown on (File > Open Mesh… for your own)."));
   connect(m_meshBox, &QComboBox::activated, this, [this](int index) {
     if (index < int(core::allPrimitiveShapes().size())) {
-      m_viewport->setMesh(core::makePrimitive(core::allPrimitiveShapes()[std::size_t(index)]));
+      showMesh(toQString(core::primitiveShapeName(core::allPrimitiveShapes()[std::size_t(index)])));
     }
   });
   toolBar->addWidget(new QLabel(tr("  Mesh ")));
@@ -187,7 +222,7 @@ void MainWindow::createToolBar() {
       tr("Split the viewport: the live material left (A), a held copy right "
          "(B), on the same camera. Drag the divider. (C)"));
   connect(m_compare, &QAction::toggled, m_viewport, &ViewportWidget::setComparing);
-  QAction* hold = toolBar->addAction(tr("Hold as B"));
+  QAction* hold = m_holdAsB = toolBar->addAction(tr("Hold as B"));
   hold->setShortcut(QKeySequence(tr("Shift+C")));
   hold->setToolTip(
       tr("Copy the current material to the B side, then change A to compare "
@@ -201,11 +236,35 @@ void MainWindow::createToolBar() {
 
 void MainWindow::createMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  file->addAction(tr("&Open Preset…"), QKeySequence::Open, this, &MainWindow::choosePreset);
+  file->addAction(tr("&New"), QKeySequence::New, m_files, &DocumentFiles::newDocument);
+  file->addAction(tr("&Open Preset…"), QKeySequence::Open, m_files, &DocumentFiles::openWithPrompt);
+  QMenu* recent = file->addMenu(tr("Open &Recent"));
+  recent->setObjectName(QStringLiteral("recentMenu"));
+  m_files->attachRecentMenu(recent);
+  file->addAction(tr("&Save"), QKeySequence::Save, m_files, &DocumentFiles::save);
+  file->addAction(tr("Save &As…"), QKeySequence(tr("Ctrl+Shift+S")), m_files,
+                  &DocumentFiles::saveAs);
+  QAction* revert = file->addAction(tr("Re&vert"), m_files, &DocumentFiles::revert);
+  revert->setEnabled(false);
+  const auto updateRevert = [this, revert] {
+    revert->setEnabled(m_document->isModified() && !m_document->filePath().isEmpty());
+  };
+  connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, updateRevert);
+  connect(m_document, &MaterialDocument::materialReset, this, updateRevert);
+  connect(m_document, &MaterialDocument::fileSaved, this, updateRevert);
+  file->addSeparator();
   file->addAction(tr("Open &Map…"), QKeySequence(tr("Ctrl+Shift+O")), this,
                   [this] { chooseMapFile(std::nullopt); });
   file->addAction(tr("Open M&esh…"), QKeySequence(tr("Ctrl+Shift+M")), this,
                   &MainWindow::chooseMesh);
+  file->addSeparator();
+  file->addAction(tr("&Export…"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::showExportDialog);
+  file->addAction(tr("Save Viewport &Image…"), QKeySequence(tr("Ctrl+Shift+E")), this,
+                  &MainWindow::chooseViewportImage);
+  file->addSeparator();
+  file->addAction(tr("&Preferences…"), QKeySequence(tr("Ctrl+,")), this,
+                  &MainWindow::showPreferences)
+      ->setMenuRole(QAction::PreferencesRole);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -216,6 +275,8 @@ void MainWindow::createMenus() {
   redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
   edit->addAction(undo);
   edit->addAction(redo);
+  edit->addSeparator();
+  edit->addAction(tr("Reset &Parameters"), m_document, &MaterialDocument::resetParameters);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Frame Mesh"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameMesh);
@@ -225,17 +286,17 @@ void MainWindow::createMenus() {
     const QString name = toQString(core::primitiveShapeName(shape));
     QAction* action = meshes->addAction(name.left(1).toUpper() + name.mid(1));
     action->setShortcut(QKeySequence(QStringLiteral("Ctrl+%1").arg(shortcut++)));
-    connect(action, &QAction::triggered, this, [this, shape] {
-      m_meshBox->setCurrentIndex(int(shape));
-      m_viewport->setMesh(core::makePrimitive(shape));
-    });
+    connect(action, &QAction::triggered, this, [this, name] { showMesh(name.toLower()); });
   }
   view->addAction(m_compare);
+  view->addAction(m_holdAsB);
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     view->addAction(dock->toggleViewAction());
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+/")), this,
+                  &MainWindow::showShortcuts);
   help->addAction(tr("Viewport &Controls"), this, &MainWindow::showControlsHelp);
   help->addAction(tr("&About Relief"), this, [this] {
     QMessageBox::about(this, tr("About Relief"),
@@ -254,12 +315,9 @@ void MainWindow::showFrameTime(double milliseconds) {
 }
 
 void MainWindow::updateTitle() {
-  const QString name = m_document->material().name().empty()
-                           ? tr("untitled")
-                           : QString::fromStdString(m_document->material().name());
-  const bool modified = !m_document->undoStack()->isClean();
   setWindowTitle(
-      QStringLiteral("%1%2 — Relief").arg(name, modified ? QStringLiteral("*") : QString()));
+      QStringLiteral("%1%2 — Relief")
+          .arg(m_files->displayName(), m_document->isModified() ? QStringLiteral("*") : QString()));
 }
 
 bool MainWindow::isImageFile(const QString& path) {
@@ -271,22 +329,7 @@ bool MainWindow::isPresetFile(const QString& path) {
 }
 
 bool MainWindow::openPreset(const QString& path) {
-  core::Result<core::LoadedPreset> loaded = core::loadPreset(path.toStdString());
-  if (!loaded) {
-    QMessageBox::warning(this, tr("Cannot open preset"), QString::fromStdString(loaded.error()));
-    return false;
-  }
-  m_document->reset(std::move(loaded->preset.material), QFileInfo(path).absoluteFilePath());
-  m_lastFolder = QFileInfo(path).absolutePath();
-  if (!loaded->warnings.empty()) {
-    QStringList lines;
-    for (const std::string& warning : loaded->warnings)
-      lines << QString::fromStdString(warning);
-    statusBar()->showMessage(lines.join(QStringLiteral("; ")), 15000);
-  } else {
-    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
-  }
-  return true;
+  return m_files->open(path);
 }
 
 bool MainWindow::loadMapFile(const QString& path, std::optional<core::MapSlot> slot) {
@@ -314,7 +357,7 @@ bool MainWindow::loadMapFile(const QString& path, std::optional<core::MapSlot> s
   }
   m_document->setMap(*slot, std::make_shared<core::Image>(std::move(image).value()),
                      QFileInfo(path).absoluteFilePath());
-  m_lastFolder = QFileInfo(path).absolutePath();
+  settings::setLastFolder(QStringLiteral("map"), QFileInfo(path).absolutePath());
   statusBar()->showMessage(
       tr("Loaded %1 as the %2 map")
           .arg(QFileInfo(path).fileName(), toQString(core::mapSlotLabel(*slot)).toLower()),
@@ -354,13 +397,14 @@ bool MainWindow::openMesh(const QString& path) {
   m_meshBox->addItem(label);
   m_meshBox->setCurrentIndex(customIndex);
   m_viewport->setMesh(std::move(imported->mesh));
-  m_lastFolder = QFileInfo(path).absolutePath();
+  m_meshSource = QFileInfo(path).absoluteFilePath();
+  settings::setLastFolder(QStringLiteral("mesh"), QFileInfo(path).absolutePath());
   return true;
 }
 
 void MainWindow::chooseMesh() {
   const QString path = QFileDialog::getOpenFileName(
-      this, tr("Open mesh"), m_lastFolder,
+      this, tr("Open mesh"), settings::lastFolder(QStringLiteral("mesh")),
       tr("Meshes (%1);;All files (*)").arg(QString::fromStdString(core::meshFileFilter())));
   if (!path.isEmpty())
     openMesh(path);
@@ -369,16 +413,10 @@ void MainWindow::chooseMesh() {
 void MainWindow::chooseMapFile(std::optional<core::MapSlot> slot) {
   const QString title =
       slot ? tr("Load %1 map").arg(toQString(core::mapSlotLabel(*slot)).toLower()) : tr("Open map");
-  const QString path = QFileDialog::getOpenFileName(this, title, m_lastFolder, imageFilter());
+  const QString path = QFileDialog::getOpenFileName(
+      this, title, settings::lastFolder(QStringLiteral("map")), imageFilter());
   if (!path.isEmpty())
     loadMapFile(path, slot);
-}
-
-void MainWindow::choosePreset() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"), m_lastFolder,
-                                                    tr("Relief presets (*.relief)"));
-  if (!path.isEmpty())
-    openPreset(path);
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
@@ -400,6 +438,180 @@ void MainWindow::dropEvent(QDropEvent* event) {
   }
   event->acceptProposedAction();
   openFiles(paths);
+}
+
+bool MainWindow::showMesh(const QString& nameOrPath) {
+  if (const auto shape = core::findPrimitiveShape(nameOrPath.toStdString())) {
+    m_meshBox->setCurrentIndex(int(*shape));
+    m_viewport->setMesh(core::makePrimitive(*shape));
+    m_meshSource = nameOrPath;
+    return true;
+  }
+  return openMesh(nameOrPath);
+}
+
+core::PresetView MainWindow::currentView() const {
+  core::PresetView view;
+  view.camera = m_viewport->view().camera;
+  view.light = m_viewport->view().light;
+  view.mesh = m_meshSource.toStdString();
+  return view;
+}
+
+void MainWindow::applyView(const core::PresetView& view) {
+  // What the preset does not say stays as it is (the samples store no view).
+  if (!view.mesh.empty() && QString::fromStdString(view.mesh) != m_meshSource)
+    showMesh(QString::fromStdString(view.mesh));
+  if (view.camera)
+    m_viewport->setCamera(*view.camera);
+  else
+    m_viewport->frameMesh();
+  if (view.light)
+    m_viewport->setLight(*view.light);
+}
+
+void MainWindow::applyDefaultView() {
+  showMesh(settings::defaultMesh());
+}
+
+void MainWindow::setBundledPresetFolder(const QString& folder) {
+  m_files->setProtectedFolder(folder);
+  m_library->setBundledFolder(folder);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!m_files->maybeSave(tr("closing"))) {
+    event->ignore();
+    return;
+  }
+  saveWindowState();
+  event->accept();
+}
+
+void MainWindow::restoreWindowState() {
+  const QSettings settings;
+  restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+  restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::saveWindowState() {
+  QSettings settings;
+  settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  settings.setValue(QStringLiteral("window/state"), saveState());
+  settings::setViewportLight(m_viewport->view().light);
+}
+
+void MainWindow::showShortcuts() {
+  ShortcutsDialog dialog(menuBar(), m_viewport->toolTip(), this);
+  dialog.exec();
+}
+
+void MainWindow::showPreferences() {
+  PreferencesDialog dialog(this);
+  if (dialog.exec() == QDialog::Accepted)
+    m_files->updateAutosaveInterval();
+}
+
+void MainWindow::showExportDialog() {
+  ExportDialog dialog(m_document->toPreset(currentView()), m_viewport->mesh(), this);
+  dialog.exec();
+}
+
+void MainWindow::saveToLibrary() {
+  bool ok = false;
+  const QString suggested = QString::fromStdString(core::exportStem(m_document->material()));
+  const QString name = QInputDialog::getText(this, tr("Save as preset"), tr("Preset name:"),
+                                             QLineEdit::Normal, suggested, &ok)
+                           .trimmed();
+  if (!ok || name.isEmpty())
+    return;
+  core::Preset preset = m_document->toPreset(currentView());
+  preset.material.setName(name.toStdString());
+  const QString folder = PresetLibrary::userFolder() + QLatin1Char('/') +
+                         QString::fromStdString(core::exportStem(preset.material));
+  if (QFileInfo::exists(folder) &&
+      QMessageBox::question(this, tr("Save as preset"),
+                            tr("You already have a preset called “%1”. Replace it?").arg(name),
+                            QMessageBox::Yes | QMessageBox::Cancel,
+                            QMessageBox::Cancel) != QMessageBox::Yes) {
+    return;
+  }
+  // A package: the library keeps its own copies of the maps (16-bit), so it does not break
+  // when the originals move.
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  core::Result<std::string> saved = core::exportPackage(preset, folder.toStdString());
+  QApplication::restoreOverrideCursor();
+  if (!saved) {
+    QMessageBox::critical(this, tr("Cannot save preset"), QString::fromStdString(saved.error()));
+    return;
+  }
+  m_library->refresh();
+  statusBar()->showMessage(tr("Added “%1” to your presets").arg(name), 5000);
+}
+
+bool MainWindow::saveViewportImage(const QString& path, int width, int height) {
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  core::Result<core::Image> image = [&]() -> core::Result<core::Image> {
+    auto offscreen = renderer::OffscreenRenderer::create();
+    if (!offscreen)
+      return core::makeError(offscreen.error());
+    if (width > offscreen.value()->maxSize() || height > offscreen.value()->maxSize()) {
+      return core::makeError(QStringLiteral("%1x%2 is larger than this GPU renders (%3)")
+                                 .arg(width)
+                                 .arg(height)
+                                 .arg(offscreen.value()->maxSize())
+                                 .toStdString());
+    }
+    offscreen.value()->setMesh(m_viewport->mesh());
+    offscreen.value()->setMaterial(m_document->material());
+    return offscreen.value()->render(m_viewport->frameSettings(), width, height);
+  }();
+  core::Status saved =
+      image ? core::saveImage(image.value(), path.toStdString(), core::SampleFormat::UInt8)
+            : core::Status(core::makeError(image.error()));
+  QApplication::restoreOverrideCursor();
+  if (!saved) {
+    QMessageBox::critical(this, tr("Cannot save the viewport image"),
+                          tr("%1: %2").arg(path, QString::fromStdString(saved.error())));
+    return false;
+  }
+  statusBar()->showMessage(
+      tr("Saved %1 (%2x%3)").arg(QFileInfo(path).fileName()).arg(width).arg(height), 6000);
+  return true;
+}
+
+void MainWindow::chooseViewportImage() {
+  QDialog sizeDialog(this);
+  sizeDialog.setWindowTitle(tr("Save viewport image"));
+  auto* widthBox = new QSpinBox;
+  auto* heightBox = new QSpinBox;
+  for (QSpinBox* box : {widthBox, heightBox}) {
+    box->setRange(16, core::kMaxImageDimension);
+    box->setSuffix(tr(" px"));
+  }
+  // Twice the viewport by default: a sharper picture of exactly what is on screen.
+  const qreal scale = 2.0 * devicePixelRatioF();
+  widthBox->setValue(int(m_viewport->width() * scale));
+  heightBox->setValue(int(m_viewport->height() * scale));
+  auto* form = new QFormLayout(&sizeDialog);
+  form->addRow(tr("Width"), widthBox);
+  form->addRow(tr("Height"), heightBox);
+  form->addRow(new QLabel(tr("Rendered offscreen with the viewport's camera, light and view.")));
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+  connect(buttons, &QDialogButtonBox::accepted, &sizeDialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &sizeDialog, &QDialog::reject);
+  form->addRow(buttons);
+  if (sizeDialog.exec() != QDialog::Accepted)
+    return;
+  const QString suggested = settings::lastFolder(QStringLiteral("image")) + QLatin1Char('/') +
+                            m_files->displayName().section(QLatin1Char('.'), 0, 0) +
+                            QStringLiteral(".png");
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save viewport image"), suggested,
+                                                    tr("Images (*.png *.jpg *.tif)"));
+  if (path.isEmpty())
+    return;
+  if (saveViewportImage(path, widthBox->value(), heightBox->value()))
+    settings::setLastFolder(QStringLiteral("image"), QFileInfo(path).absolutePath());
 }
 
 }  // namespace relief::ui

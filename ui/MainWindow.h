@@ -1,9 +1,11 @@
-// MainWindow: the editor. The viewport in the centre, docks for maps, parameters and the undo
-// history, menus with shortcuts, drag-and-drop of maps and presets, and a status bar with the
-// frame time. It owns the document; it is the only place that shows dialogs.
+// MainWindow: the editor. The viewport in the centre, docks for maps, parameters, light,
+// generators, presets and the undo history, menus with shortcuts, drag-and-drop of maps and
+// presets, and a status bar with the frame time. It owns the document; the file workflow
+// (open, save, recovery) is DocumentFiles'. Window layout is kept across runs.
 #pragma once
 
 #include "core/MapSlot.h"
+#include "core/MaterialPreset.h"
 
 #include <QMainWindow>
 #include <QStringList>
@@ -17,11 +19,13 @@ class QProgressBar;
 
 namespace relief::ui {
 
+class DocumentFiles;
 class GeneratePanel;
 class LightPanel;
 class MapsPanel;
 class MaterialDocument;
 class ParameterPanel;
+class PresetLibrary;
 class ViewportWidget;
 
 class MainWindow : public QMainWindow {
@@ -39,14 +43,26 @@ class MainWindow : public QMainWindow {
   QComboBox* debugViewBox() const { return m_debugView; }
   QComboBox* meshBox() const { return m_meshBox; }
   QAction* compareAction() const { return m_compare; }
+  DocumentFiles* files() const { return m_files; }
+  PresetLibrary* presetLibrary() const { return m_library; }
+  // The mesh shown: a primitive's name or a mesh file's path (as a preset stores it).
+  const QString& meshSource() const { return m_meshSource; }
 
-  // Opens a preset; reports problems in a dialog (errors) or the status bar (warnings).
+  // Opens a preset (asking first if there are unsaved changes); reports problems in dialogs.
   bool openPreset(const QString& path);
+  // Where the bundled presets are: listed in the library, never overwritten by Save.
+  void setBundledPresetFolder(const QString& folder);
+  // Renders the viewport's current frame offscreen at any size and saves it (PNG, JPEG, TIFF).
+  bool saveViewportImage(const QString& path, int width, int height);
+  // Shows the main shortcuts; also Help > Keyboard Shortcuts.
+  void showShortcuts();
   // Loads an image into a slot: the given one, else the one its name hints at, else the one
   // the user picks. Returns false (after telling the user) when the file cannot be used.
   bool loadMapFile(const QString& path, std::optional<core::MapSlot> slot = std::nullopt);
   // Opens a mesh through Assimp; reports problems in a dialog.
   bool openMesh(const QString& path);
+  // A primitive by name (plane, cube, ...) or a mesh file.
+  bool showMesh(const QString& nameOrPath);
   // What a drop does: presets are opened, images assigned to slots.
   void openFiles(const QStringList& paths);
 
@@ -54,6 +70,7 @@ class MainWindow : public QMainWindow {
   static bool isPresetFile(const QString& path);
 
  protected:
+  void closeEvent(QCloseEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
@@ -65,8 +82,16 @@ class MainWindow : public QMainWindow {
   void showFrameTime(double milliseconds);
   void updateTitle();
   void chooseMapFile(std::optional<core::MapSlot> slot);
-  void choosePreset();
   void showControlsHelp();
+  void chooseViewportImage();
+  void showExportDialog();
+  void showPreferences();
+  void saveToLibrary();
+  core::PresetView currentView() const;
+  void applyView(const core::PresetView& view);
+  void applyDefaultView();
+  void restoreWindowState();
+  void saveWindowState();
 
   MaterialDocument* m_document;
   ViewportWidget* m_viewport;
@@ -77,10 +102,13 @@ class MainWindow : public QMainWindow {
   QComboBox* m_debugView = nullptr;
   QComboBox* m_meshBox = nullptr;
   QAction* m_compare = nullptr;
+  QAction* m_holdAsB = nullptr;
   QProgressBar* m_progress;
   QLabel* m_frameTime;
   QLabel* m_rendererLabel;
-  QString m_lastFolder;
+  DocumentFiles* m_files = nullptr;
+  PresetLibrary* m_library = nullptr;
+  QString m_meshSource = QStringLiteral("plane");
 };
 
 }  // namespace relief::ui

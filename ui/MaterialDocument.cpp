@@ -3,15 +3,56 @@
 
 #include "ui/MaterialCommands.h"
 
+#include <QFileInfo>
+
 namespace relief::ui {
 
 MaterialDocument::MaterialDocument(QObject* parent) : QObject(parent) {}
 
 void MaterialDocument::reset(core::Material material, const QString& filePath) {
-  m_material = std::move(material);
+  core::Preset preset;
+  preset.material = std::move(material);
+  reset(std::move(preset), filePath);
+}
+
+void MaterialDocument::reset(core::Preset preset, const QString& filePath) {
+  m_material = std::move(preset.material);
+  m_compression = preset.compression;
+  m_preserved = std::move(preset.preserved);
   m_filePath = filePath;
   m_undoStack.clear();
   Q_EMIT materialReset();
+}
+
+core::Preset MaterialDocument::toPreset(const core::PresetView& view) const {
+  core::Preset preset;
+  preset.material = m_material;
+  preset.view = view;
+  preset.compression = m_compression;
+  preset.preserved = m_preserved;
+  return preset;
+}
+
+core::Result<core::SavedPreset> MaterialDocument::save(const QString& path,
+                                                       const core::PresetView& view) {
+  core::Preset preset = toPreset(view);
+  // A material named after its file follows the file (Save As "mossy.relief" names it mossy);
+  // a name the artist chose stays.
+  const std::string oldStem = QFileInfo(m_filePath).completeBaseName().toStdString();
+  if (preset.material.name().empty() || preset.material.name() == oldStem)
+    preset.material.setName(QFileInfo(path).completeBaseName().toStdString());
+  core::Result<core::SavedPreset> saved = core::savePreset(preset, path.toStdString());
+  if (!saved)
+    return saved;
+  m_material.setName(preset.material.name());
+  // The written files are now the maps' sources; undo history keeps the images themselves, so
+  // only the path changes here.
+  for (const auto& [slot, writtenPath] : saved->writtenMaps)
+    m_material.setMap(slot, m_material.map(slot).image, writtenPath);
+  m_filePath = path;
+  m_undoStack.setClean();
+  Q_EMIT fileSaved();
+  return saved;
 }
 
 void MaterialDocument::setParameter(core::ParamId id, double value, int interactiveEdit) {
@@ -49,6 +90,17 @@ void MaterialDocument::applyGenerated(
   setMap(slot, std::move(image), QString());
   for (const auto& [id, value] : parameterChanges)
     setParameter(id, value);
+  m_undoStack.endMacro();
+}
+
+void MaterialDocument::applyLook(const core::Material& from, const QString& label) {
+  if (from.technique() == m_material.technique() && from.parameters() == m_material.parameters())
+    return;
+  m_undoStack.beginMacro(label);
+  setTechnique(from.technique());
+  if (from.parameters() != m_material.parameters()) {
+    m_undoStack.push(new SetAllParametersCommand(this, m_material.parameters(), from.parameters()));
+  }
   m_undoStack.endMacro();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/Material.h"
+#include "core/MaterialPreset.h"
 
 #include <QObject>
 #include <QString>
@@ -23,10 +24,21 @@ class MaterialDocument : public QObject {
 
   const core::Material& material() const { return m_material; }
   QUndoStack* undoStack() { return &m_undoStack; }
+  // The preset file this document was opened from or saved to; empty for a new one.
   const QString& filePath() const { return m_filePath; }
+  // Unsaved edits: the undo stack is not at the state last opened or saved.
+  bool isModified() const { return !m_undoStack.isClean(); }
 
   // Replaces the whole material (a preset was opened); the undo history starts afresh.
   void reset(core::Material material, const QString& filePath);
+  // Replaces everything with a loaded preset: the material, its compression choices and the
+  // keys this program does not know (kept for the next save). The view is the window's.
+  void reset(core::Preset preset, const QString& filePath);
+  // The document as a preset, with the given view (camera, light, mesh).
+  core::Preset toPreset(const core::PresetView& view) const;
+  // Saves atomically to `path`; on success the document takes the path, becomes unmodified,
+  // and maps that had no file point at the files the save wrote (not an undoable edit).
+  core::Result<core::SavedPreset> save(const QString& path, const core::PresetView& view);
 
   // Starts an interactive edit (a slider drag). Every setParameter() call with the returned
   // id and the same parameter merges into one undo step.
@@ -37,6 +49,8 @@ class MaterialDocument : public QObject {
   void setMap(core::MapSlot slot, std::shared_ptr<const core::Image> image,
               const QString& sourcePath);
   void clearMap(core::MapSlot slot);
+  // Another material's technique and parameters (not its maps), as one undo step.
+  void applyLook(const core::Material& from, const QString& label);
   // A generated map and the parameter changes that go with it, as one undo step.
   void applyGenerated(core::MapSlot slot, std::shared_ptr<const core::Image> image,
                       const QString& label,
@@ -53,9 +67,12 @@ class MaterialDocument : public QObject {
   void techniqueChanged();
   void mapChanged(relief::core::MapSlot slot);
   void materialReset();
+  void fileSaved();  // saved to filePath(); maps may now name the files the save wrote
 
  private:
   core::Material m_material;
+  std::array<core::MapCompression, core::kMapSlotCount> m_compression;
+  QJsonObject m_preserved;
   QUndoStack m_undoStack;
   QString m_filePath;
   int m_lastInteractiveEdit = 0;

@@ -92,6 +92,13 @@ void ViewportWidget::setView(const renderer::RenderView& view) {
 void ViewportWidget::setLight(const core::DirectionalLight& light) {
   m_frame.view.light = light;
   changed();
+  Q_EMIT lightChanged();
+}
+
+void ViewportWidget::setCamera(const core::OrbitCamera& camera) {
+  m_frame.view.camera = camera;
+  m_framePending = false;
+  changed();
 }
 
 void ViewportWidget::setMesh(core::Mesh mesh) {

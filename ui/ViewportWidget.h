@@ -35,7 +35,9 @@ class ViewportWidget : public QOpenGLWidget {
 
   const renderer::RenderView& view() const { return m_frame.view; }
   void setView(const renderer::RenderView& view);
-  void setLight(const core::DirectionalLight& light);
+  void setLight(const core::DirectionalLight& light);  // emits lightChanged
+  // Places the camera as given, instead of framing the mesh (a preset's saved view).
+  void setCamera(const core::OrbitCamera& camera);
   const core::Mesh& mesh() const { return m_mesh; }
   void setMesh(core::Mesh mesh);  // also frames the camera on it (at the next frame)
 
