@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QSettings>
+#include <QStandardPaths>
 
 #include <algorithm>
 
@@ -42,14 +43,18 @@ void removeRecentFile(const QString& path) {
   QSettings().setValue(kRecent, files);
 }
 
-QString lastFolder(const QString& purpose) {
+QString lastFolder(const QString& purpose, bool orAny) {
   const QSettings settings;
-  for (const QString& key : {kFolders + purpose, kAnyFolder}) {
+  QStringList keys{kFolders + purpose};
+  if (orAny)
+    keys << kAnyFolder;
+  for (const QString& key : keys) {
     const QString folder = settings.value(key).toString();
     if (!folder.isEmpty() && QFileInfo(folder).isDir())
       return folder;
   }
-  return QDir::homePath();
+  const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+  return QFileInfo(documents).isDir() ? documents : QDir::homePath();
 }
 
 void setLastFolder(const QString& purpose, const QString& folder) {

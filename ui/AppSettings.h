@@ -18,8 +18,9 @@ void addRecentFile(const QString& path);
 void removeRecentFile(const QString& path);
 
 // The folder a file dialog for `purpose` ("preset", "map", "mesh", "export", "image") opens in:
-// the last one used for it, else the last one used for anything, else the home folder.
-QString lastFolder(const QString& purpose);
+// the last one used for it, else (when `orAny`) the last one used for anything, else the
+// Documents folder.
+QString lastFolder(const QString& purpose, bool orAny = true);
 void setLastFolder(const QString& purpose, const QString& folder);
 
 // Preferences (the Preferences dialog).

@@ -56,12 +56,17 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
       tr("How the normal, height, AO and roughness maps are written; the "
          "colour map is always 8-bit sRGB PNG."));
   const std::string stem = core::exportStem(m_preset.material);
-  m_folder->setText(settings::lastFolder(QStringLiteral("export")) + QLatin1Char('/') +
+  // Exports go where exports went before, not beside the preset (which may be a bundled one).
+  m_folder->setText(settings::lastFolder(QStringLiteral("export"), false) + QLatin1Char('/') +
                     QString::fromStdString(stem) + QStringLiteral("_export"));
   auto* browse = new QPushButton(tr("Browse…"));
+  browse->setAutoDefault(false);  // Return exports
   connect(browse, &QPushButton::clicked, this, [this] {
-    const QString folder =
-        QFileDialog::getExistingDirectory(this, tr("Export into folder"), m_folder->text());
+    QString start = m_folder->text();
+    while (!start.isEmpty() && !QFileInfo(start).isDir())
+      start =
+          QFileInfo(start).absolutePath() == start ? QString() : QFileInfo(start).absolutePath();
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Export into folder"), start);
     if (!folder.isEmpty())
       m_folder->setText(folder);
   });
@@ -78,6 +83,7 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel);
   QPushButton* exportButton = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
   exportButton->setDefault(true);
+  buttons->button(QDialogButtonBox::Cancel)->setAutoDefault(false);  // Return exports
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   connect(exportButton, &QPushButton::clicked, this, [this] {
     if (runExport())
@@ -89,6 +95,7 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
   layout->addWidget(buttons);
   connect(m_kind, &QComboBox::currentIndexChanged, this, &ExportDialog::updateForKind);
   updateForKind();
+  m_kind->setFocus();
 }
 
 void ExportDialog::updateForKind() {

@@ -603,9 +603,9 @@ void MainWindow::chooseViewportImage() {
   form->addRow(buttons);
   if (sizeDialog.exec() != QDialog::Accepted)
     return;
-  const QString suggested = settings::lastFolder(QStringLiteral("image")) + QLatin1Char('/') +
-                            m_files->displayName().section(QLatin1Char('.'), 0, 0) +
-                            QStringLiteral(".png");
+  const QString suggested =
+      settings::lastFolder(QStringLiteral("image"), false) + QLatin1Char('/') +
+      m_files->displayName().section(QLatin1Char('.'), 0, 0) + QStringLiteral(".png");
   const QString path = QFileDialog::getSaveFileName(this, tr("Save viewport image"), suggested,
                                                     tr("Images (*.png *.jpg *.tif)"));
   if (path.isEmpty())
