@@ -16,6 +16,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 #include <gtest/gtest.h>
 
@@ -24,7 +25,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 
 namespace relief::core {
 namespace {
@@ -276,15 +276,15 @@ struct GodotResource {
   std::map<std::string, std::string> properties;
 };
 
-std::map<std::string, std::string> parseAttributes(const std::string& text) {
+// std::regex would do, but GCC 12 warns falsely inside it at -O2 (-Wmaybe-uninitialized).
+std::map<std::string, std::string> parseAttributes(const QString& text) {
   std::map<std::string, std::string> attributes;
-  static const std::regex attribute(R"re((\w+)=("[^"]*"|\S+))re");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), attribute);
-       it != std::sregex_iterator(); ++it) {
-    std::string value = (*it)[2];
-    if (value.size() >= 2 && value.front() == '"')
-      value = value.substr(1, value.size() - 2);
-    attributes[(*it)[1]] = value;
+  static const QRegularExpression attribute(QStringLiteral(R"re((\w+)=("[^"]*"|\S+))re"));
+  for (const QRegularExpressionMatch& match : attribute.globalMatch(text)) {
+    QString value = match.captured(2);
+    if (value.size() >= 2 && value.front() == QLatin1Char('"'))
+      value = value.mid(1, value.size() - 2);
+    attributes[match.captured(1).toStdString()] = value.toStdString();
   }
   return attributes;
 }
@@ -293,18 +293,19 @@ GodotResource parseTres(const std::string& path) {
   GodotResource resource;
   std::ifstream in(path);
   std::string line, section;
-  static const std::regex header(R"re(^\[(\w+)(.*)\]$)re");
-  static const std::regex property(R"re(^(\w+) = (.+)$)re");
-  std::smatch match;
+  static const QRegularExpression header(QStringLiteral(R"re(^\[(\w+)(.*)\]$)re"));
+  static const QRegularExpression property(QStringLiteral(R"re(^(\w+) = (.+)$)re"));
   while (std::getline(in, line)) {
-    if (std::regex_match(line, match, header)) {
-      section = match[1];
+    const QString text = QString::fromStdString(line);
+    if (const QRegularExpressionMatch match = header.match(text); match.hasMatch()) {
+      section = match.captured(1).toStdString();
       if (section == "gd_resource")
-        resource.header = parseAttributes(match[2]);
+        resource.header = parseAttributes(match.captured(2));
       else if (section == "ext_resource")
-        resource.extResources.push_back(parseAttributes(match[2]));
-    } else if (section == "resource" && std::regex_match(line, match, property)) {
-      resource.properties[match[1]] = match[2];
+        resource.extResources.push_back(parseAttributes(match.captured(2)));
+    } else if (const QRegularExpressionMatch prop = property.match(text);
+               section == "resource" && prop.hasMatch()) {
+      resource.properties[prop.captured(1).toStdString()] = prop.captured(2).toStdString();
     } else {
       EXPECT_TRUE(line.empty()) << "unexpected line in " << path << ": " << line;
     }
@@ -335,13 +336,14 @@ TEST(GodotExport, TresParsesBackWithHeightmapSettingsConverted) {
     EXPECT_TRUE(std::filesystem::exists(folder + "/" + ext.at("path"))) << ext.at("path");
   }
   const auto texture = [&](const std::string& key) -> std::string {
-    static const std::regex reference(R"re(^ExtResource\("([^"]+)"\)$)re");
-    std::smatch m;
+    static const QRegularExpression reference(QStringLiteral(R"re(^ExtResource\("([^"]+)"\)$)re"));
     const std::string value = tres.properties.count(key) ? tres.properties.at(key) : "";
-    if (!std::regex_match(value, m, reference))
+    const QRegularExpressionMatch m = reference.match(QString::fromStdString(value));
+    if (!m.hasMatch())
       return "";
-    EXPECT_TRUE(files.count(m[1])) << key << " references undeclared " << m[1];
-    return files[m[1]];
+    const std::string id = m.captured(1).toStdString();
+    EXPECT_TRUE(files.count(id)) << key << " references undeclared " << id;
+    return files[id];
   };
   const auto& p = tres.properties;
   EXPECT_FALSE(texture("albedo_texture").empty());
