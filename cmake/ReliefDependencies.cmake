@@ -17,3 +17,21 @@ foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
     set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${prop} "${dirs}")
   endif()
 endforeach()
+
+# Texture codecs (PLATFORM.md). libsquish has no CMake config and an empty pkg-config prefix;
+# android-libetc1 lives in a private folder without any metadata, so it is linked by path with
+# an rpath (CMake adds it for full library paths outside the system folders).
+find_path(SQUISH_INCLUDE_DIR squish.h REQUIRED)
+find_library(SQUISH_LIBRARY squish REQUIRED)
+add_library(relief_squish INTERFACE)
+target_include_directories(relief_squish SYSTEM INTERFACE ${SQUISH_INCLUDE_DIR})
+target_link_libraries(relief_squish INTERFACE ${SQUISH_LIBRARY})
+
+find_package(astcenc REQUIRED CONFIG)
+
+find_path(ETC1_INCLUDE_DIR android/ETC1/etc1.h REQUIRED)
+find_library(ETC1_LIBRARY ETC1 PATHS /usr/lib/x86_64-linux-gnu/android /usr/lib/android
+             PATH_SUFFIXES android REQUIRED)
+add_library(relief_etc1 INTERFACE)
+target_include_directories(relief_etc1 SYSTEM INTERFACE ${ETC1_INCLUDE_DIR})
+target_link_libraries(relief_etc1 INTERFACE ${ETC1_LIBRARY})

@@ -1,0 +1,242 @@
+// Compressor; see Compressor.h.
+#include "core/compression/Compressor.h"
+
+#include "core/ParallelFor.h"
+#include "core/compression/AstcCodec.h"
+#include "core/compression/BlockCodecs.h"
+#include "core/compression/MipChain.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <string>
+
+namespace relief::core {
+namespace {
+
+bool isBcFamily(TextureFormat format) {
+  return format <= TextureFormat::Dxt5nm;
+}
+
+// The map as four channels in the layout the format's encoder expects.
+Image prepare(const Image& map, MapSlot slot, TextureFormat format) {
+  const FormatLayout layout = textureFormatInfo(format).layout;
+  const int channels = map.channels();
+  Image rgba(map.width(), map.height(), 4, map.colorSpace());
+  for (std::size_t p = 0; p < map.pixelCount(); ++p) {
+    const float* in = map.data() + p * std::size_t(channels);
+    float* out = rgba.data() + p * 4;
+    if (channels >= 3) {
+      out[0] = in[0];
+      out[1] = in[1];
+      out[2] = in[2];
+    } else {
+      out[0] = out[1] = out[2] = in[0];
+    }
+    out[3] = channels == 4 ? in[3] : channels == 2 ? in[1] : 1.0f;
+    if (slot == MapSlot::Normal &&
+        (layout == FormatLayout::NormalRg || layout == FormatLayout::NormalAg)) {
+      out[2] = 0.0f;  // rebuilt from X and Y when decoded
+      out[3] = 1.0f;
+    }
+  }
+  return rgba;
+}
+
+// Encodes one level with the block codecs, on all cores.
+bool encodeBlocks(const Image& rgba, const CompressionSettings& settings, bool perceptual,
+                  std::vector<std::uint8_t>& out, const WorkControl& control) {
+  const TextureFormatInfo& info = textureFormatInfo(settings.format);
+  const int width = rgba.width(), height = rgba.height();
+  const int blocksX = (width + 3) / 4, blocksY = (height + 3) / 4;
+  out.assign(std::size_t(blocksX) * std::size_t(blocksY) * std::size_t(info.bytesPerBlock), 0);
+  return parallelFor(
+      blocksY,
+      [&](int by) {
+        BlockTexels texels;
+        for (int bx = 0; bx < blocksX; ++bx) {
+          int validMask = 0;
+          for (int j = 0; j < 4; ++j) {
+            for (int i = 0; i < 4; ++i) {
+              const int x = bx * 4 + i, y = by * 4 + j;
+              if (x < width && y < height)
+                validMask |= 1 << (j * 4 + i);
+              // Padding repeats the edge, so even a fit that saw these texels stays close.
+              const float* texel = rgba.pixel(std::min(x, width - 1), std::min(y, height - 1));
+              std::copy(texel, texel + 4, texels[j * 4 + i]);
+            }
+          }
+          std::uint8_t* block =
+              out.data() + (std::size_t(by) * std::size_t(blocksX) + std::size_t(bx)) *
+                               std::size_t(info.bytesPerBlock);
+          if (isBcFamily(settings.format)) {
+            encodeBcBlock(settings.format, settings.quality, perceptual, texels, validMask, block);
+          } else {
+            encodeEtcBlock(settings.format, settings.quality, texels, validMask, block);
+          }
+        }
+      },
+      control);
+}
+
+// A sub-range [begin, begin + share) of the overall progress.
+WorkControl slice(const WorkControl& control, double begin, double share) {
+  WorkControl part;
+  part.cancel = control.cancel;
+  if (control.progress) {
+    part.progress = [progress = control.progress, begin, share](double fraction) {
+      progress(begin + share * fraction);
+    };
+  }
+  return part;
+}
+
+}  // namespace
+
+std::uint64_t compressedLevelSize(TextureFormat format, int width, int height) {
+  const TextureFormatInfo& info = textureFormatInfo(format);
+  const std::uint64_t blocksX = (std::uint64_t(width) + info.blockWidth - 1) / info.blockWidth;
+  const std::uint64_t blocksY = (std::uint64_t(height) + info.blockHeight - 1) / info.blockHeight;
+  return blocksX * blocksY * std::uint64_t(info.bytesPerBlock);
+}
+
+std::uint64_t CompressedTexture::byteSize() const {
+  std::uint64_t total = 0;
+  for (const CompressedLevel& level : levels)
+    total += level.data.size();
+  return total;
+}
+
+bool formatSuitsSlot(TextureFormat format, MapSlot slot) {
+  const FormatLayout layout = textureFormatInfo(format).layout;
+  switch (slot) {
+    case MapSlot::Color:
+      return layout == FormatLayout::Rgb || layout == FormatLayout::Rgba;
+    case MapSlot::Normal:
+      return layout != FormatLayout::R;
+    default:
+      return layout == FormatLayout::R || layout == FormatLayout::Rgb || isAstc(format);
+  }
+}
+
+std::vector<TextureFormat> formatsForSlot(MapSlot slot) {
+  std::vector<TextureFormat> formats;
+  for (const TextureFormatInfo& info : allTextureFormats()) {
+    // ETC2 RGB encodes exactly as ETC1 here (an ETC1 stream); comparing both shows nothing.
+    if (info.format != TextureFormat::Etc2 && formatSuitsSlot(info.format, slot))
+      formats.push_back(info.format);
+  }
+  return formats;
+}
+
+Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
+                                      const CompressionSettings& settings,
+                                      const WorkControl& control) {
+  if (map.isEmpty())
+    return makeError("the map is empty");
+  if (!formatSuitsSlot(settings.format, slot)) {
+    return makeError(std::string(textureFormatInfo(settings.format).label) + " cannot hold a " +
+                     std::string(mapSlotLabel(slot)) + " map");
+  }
+  CompressedTexture texture;
+  texture.format = settings.format;
+  texture.slot = slot;
+  texture.sourceChannels = map.channels();
+  texture.srgb = slot == MapSlot::Color && textureFormatInfo(settings.format).srgbVkFormat != 0;
+
+  std::vector<Image> chain;
+  if (settings.mipmaps)
+    chain = buildMipChain(map, slot);
+  else
+    chain.push_back(map);
+  double totalPixels = 0.0;
+  for (const Image& level : chain)
+    totalPixels += double(level.pixelCount());
+
+  double done = 0.0;
+  for (const Image& level : chain) {
+    const double share = double(level.pixelCount()) / totalPixels;
+    const WorkControl part = slice(control, done / totalPixels, share);
+    const Image rgba = prepare(level, slot, settings.format);
+    CompressedLevel compressed{level.width(), level.height(), {}};
+    if (isAstc(settings.format)) {
+      auto encoded = encodeAstc(settings.format, settings.quality, texture.srgb, rgba, part);
+      if (!encoded)
+        return makeError(encoded.error());
+      compressed.data = std::move(encoded).value();
+    } else if (!encodeBlocks(rgba, settings, slot == MapSlot::Color, compressed.data, part)) {
+      return makeError("cancelled");
+    }
+    texture.levels.push_back(std::move(compressed));
+    done += double(level.pixelCount());
+  }
+  control.report(1.0);
+  return texture;
+}
+
+Result<Image> decodeLevel(const CompressedTexture& texture, int levelIndex) {
+  if (levelIndex < 0 || levelIndex >= int(texture.levels.size()))
+    return makeError("no mip level " + std::to_string(levelIndex));
+  const CompressedLevel& level = texture.levels[std::size_t(levelIndex)];
+  const TextureFormatInfo& info = textureFormatInfo(texture.format);
+  if (level.data.size() < compressedLevelSize(texture.format, level.width, level.height))
+    return makeError("level " + std::to_string(levelIndex) + " holds fewer bytes than its size");
+  if (isAstc(texture.format)) {
+    return decodeAstc(texture.format, texture.srgb, level.data.data(), level.data.size(),
+                      level.width, level.height);
+  }
+  Image decoded(level.width, level.height, 4, texture.srgb ? ColorSpace::Srgb : ColorSpace::Linear);
+  const int blocksX = (level.width + 3) / 4, blocksY = (level.height + 3) / 4;
+  parallelFor(blocksY, [&](int by) {
+    BlockTexels texels;
+    for (int bx = 0; bx < blocksX; ++bx) {
+      const std::uint8_t* block =
+          level.data.data() + (std::size_t(by) * std::size_t(blocksX) + std::size_t(bx)) *
+                                  std::size_t(info.bytesPerBlock);
+      if (isBcFamily(texture.format))
+        decodeBcBlock(texture.format, block, texels);
+      else
+        decodeEtcBlock(texture.format, block, texels);
+      for (int j = 0; j < 4; ++j) {
+        for (int i = 0; i < 4; ++i) {
+          const int x = bx * 4 + i, y = by * 4 + j;
+          if (x < level.width && y < level.height)
+            std::copy(texels[j * 4 + i], texels[j * 4 + i] + 4, decoded.pixel(x, y));
+        }
+      }
+    }
+  });
+  return decoded;
+}
+
+Result<Image> decodeAsMap(const CompressedTexture& texture, int levelIndex) {
+  Result<Image> rgba = decodeLevel(texture, levelIndex);
+  if (!rgba)
+    return rgba;
+  const FormatLayout layout = textureFormatInfo(texture.format).layout;
+  const MapSlot slot = texture.slot;
+  const int channels = slot == MapSlot::Color    ? std::clamp(texture.sourceChannels, 3, 4)
+                       : slot == MapSlot::Normal ? 3
+                                                 : 1;
+  Image map(rgba->width(), rgba->height(), channels, mapSlotColorSpace(slot));
+  map.setSourceBitsPerChannel(8);
+  for (std::size_t p = 0; p < map.pixelCount(); ++p) {
+    const float* in = rgba->data() + p * 4;
+    float* out = map.data() + p * std::size_t(channels);
+    if (slot == MapSlot::Normal &&
+        (layout == FormatLayout::NormalRg || layout == FormatLayout::NormalAg)) {
+      // Reference 003, eq. 2.1: z = sqrt(1 - x^2 - y^2) from the two stored components.
+      const float x = (layout == FormatLayout::NormalAg ? in[3] : in[0]) * 2.0f - 1.0f;
+      const float y = in[1] * 2.0f - 1.0f;
+      const float z = std::sqrt(std::max(0.0f, 1.0f - x * x - y * y));
+      out[0] = x * 0.5f + 0.5f;
+      out[1] = y * 0.5f + 0.5f;
+      out[2] = z * 0.5f + 0.5f;
+    } else {
+      std::copy(in, in + channels, out);
+    }
+  }
+  return map;
+}
+
+}  // namespace relief::core

@@ -1,0 +1,61 @@
+// Compressing maps into GPU formats and decoding them back. A map is prepared for the format's
+// layout (colour as RGB(A), a normal's X and Y for the two-channel formats, a height or other
+// single value in red), optionally given a full mip chain (MipChain.h), and encoded level by
+// level on all cores with progress and cancel. Sizes that are not multiples of the block size
+// are padded by repeating the edge texels, which are left out of each edge block's fit.
+#pragma once
+
+#include "core/Image.h"
+#include "core/MapSlot.h"
+#include "core/Result.h"
+#include "core/WorkControl.h"
+#include "core/compression/TextureFormat.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace relief::core {
+
+struct CompressionSettings {
+  TextureFormat format = TextureFormat::Bc1;
+  CompressionQuality quality = CompressionQuality::Normal;
+  bool mipmaps = false;
+};
+
+struct CompressedLevel {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> data;  // blocks in rows, top row first
+};
+
+struct CompressedTexture {
+  TextureFormat format = TextureFormat::Bc1;
+  bool srgb = false;  // the colour map: sRGB-encoded texels (the formats' sRGB variants)
+  MapSlot slot = MapSlot::Color;
+  int sourceChannels = 4;  // channels of the map it was made from
+  std::vector<CompressedLevel> levels;
+
+  std::uint64_t byteSize() const;
+};
+
+// Bytes of one level: whole blocks covering width x height.
+std::uint64_t compressedLevelSize(TextureFormat format, int width, int height);
+
+// Fails with "cancelled" when cancelled, or when the format cannot hold the map (a colour map
+// in a one-channel format).
+Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
+                                      const CompressionSettings& settings,
+                                      const WorkControl& control = {});
+
+// The texels of a level as a GPU samples them: RGBA, without swizzles or rebuilt Z.
+Result<Image> decodeLevel(const CompressedTexture& texture, int level = 0);
+// A level as a map for its slot again: normals as RGB with Z = sqrt(1 - x^2 - y^2) rebuilt
+// for the two-channel formats (reference 003, eq. 2.1), single values as one channel, colour
+// with the source's channel count.
+Result<Image> decodeAsMap(const CompressedTexture& texture, int level = 0);
+
+// Whether the format can hold a map of this slot, and which formats "compare all" tries.
+bool formatSuitsSlot(TextureFormat format, MapSlot slot);
+std::vector<TextureFormat> formatsForSlot(MapSlot slot);
+
+}  // namespace relief::core

@@ -1,0 +1,359 @@
+// ETC1, ETC2 and EAC blocks; see BlockCodecs.h. Bit layouts and tables from the ETC2/EAC
+// definition in the OpenGL ES 3.0 specification (appendix C.1) and the Khronos Data Format
+// specification, section "ETC2 Compressed Texture Image Formats". Blocks are big-endian 64-bit
+// words; texel (x, y) uses index bit x * 4 + y (column-major).
+#include "core/compression/BlockCodecs.h"
+
+#include <android/ETC1/etc1.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace relief::core {
+namespace {
+
+// ETC1/ETC2 intensity modifier tables (codeword 0..7); index msb,lsb: 00 +a, 01 +b, 10 -a,
+// 11 -b.
+constexpr int kEtcModifiers[8][4] = {{2, 8, -2, -8},       {5, 17, -5, -17},    {9, 29, -9, -29},
+                                     {13, 42, -13, -42},   {18, 60, -18, -60},  {24, 80, -24, -80},
+                                     {33, 106, -33, -106}, {47, 183, -47, -183}};
+
+// T and H mode distances.
+constexpr int kEtcDistances[8] = {3, 6, 11, 16, 23, 32, 41, 64};
+
+// EAC modifier tables (ES 3.0 table C.9).
+constexpr int kEacModifiers[16][8] = {
+    {-3, -6, -9, -15, 2, 5, 8, 14}, {-3, -7, -10, -13, 2, 6, 9, 12}, {-2, -5, -8, -13, 1, 4, 7, 12},
+    {-2, -4, -6, -13, 1, 3, 5, 12}, {-3, -6, -8, -12, 2, 5, 7, 11},  {-3, -7, -9, -11, 2, 6, 8, 10},
+    {-4, -7, -8, -11, 3, 6, 7, 10}, {-3, -5, -8, -11, 2, 4, 7, 10},  {-2, -6, -8, -10, 1, 5, 7, 9},
+    {-2, -5, -8, -10, 1, 4, 7, 9},  {-2, -4, -8, -10, 1, 3, 7, 9},   {-2, -5, -7, -10, 1, 4, 6, 9},
+    {-3, -4, -7, -10, 2, 3, 6, 9},  {-1, -2, -3, -10, 0, 1, 2, 9},   {-4, -6, -8, -9, 3, 5, 7, 8},
+    {-3, -5, -7, -9, 2, 4, 6, 8}};
+
+std::uint64_t readBigEndian(const std::uint8_t* p) {
+  std::uint64_t word = 0;
+  for (int i = 0; i < 8; ++i)
+    word = word << 8 | p[i];
+  return word;
+}
+
+void writeBigEndian(std::uint64_t word, std::uint8_t* p) {
+  for (int i = 7; i >= 0; --i) {
+    p[i] = std::uint8_t(word & 0xff);
+    word >>= 8;
+  }
+}
+
+int bits(std::uint64_t word, int high, int low) {
+  return int((word >> low) & ((std::uint64_t(1) << (high - low + 1)) - 1));
+}
+
+int extend4(int v) {
+  return v << 4 | v;
+}
+int extend5(int v) {
+  return v << 3 | v >> 2;
+}
+int extend6(int v) {
+  return v << 2 | v >> 4;
+}
+int extend7(int v) {
+  return v << 1 | v >> 6;
+}
+int clamp255(int v) {
+  return std::clamp(v, 0, 255);
+}
+
+int texelIndex(std::uint64_t word, int x, int y) {
+  const int bit = x * 4 + y;
+  return int((word >> (16 + bit)) & 1) << 1 | int((word >> bit) & 1);
+}
+
+}  // namespace
+
+void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]) {
+  const std::uint64_t word = readBigEndian(in);
+  const bool differential = bits(word, 33, 33);
+  int base[2][3];
+  if (!differential) {
+    for (int ch = 0; ch < 3; ++ch) {
+      base[0][ch] = extend4(bits(word, 63 - 8 * ch, 60 - 8 * ch));
+      base[1][ch] = extend4(bits(word, 59 - 8 * ch, 56 - 8 * ch));
+    }
+  } else {
+    int five[3], second[3];
+    for (int ch = 0; ch < 3; ++ch) {
+      five[ch] = bits(word, 63 - 8 * ch, 59 - 8 * ch);
+      int delta = bits(word, 58 - 8 * ch, 56 - 8 * ch);
+      if (delta >= 4)
+        delta -= 8;
+      second[ch] = five[ch] + delta;
+    }
+    if (second[0] < 0 || second[0] > 31) {
+      // T mode.
+      const int c1[3] = {extend4(bits(word, 60, 59) << 2 | bits(word, 57, 56)),
+                         extend4(bits(word, 55, 52)), extend4(bits(word, 51, 48))};
+      const int c2[3] = {extend4(bits(word, 47, 44)), extend4(bits(word, 43, 40)),
+                         extend4(bits(word, 39, 36))};
+      const int d = kEtcDistances[bits(word, 35, 34) << 1 | bits(word, 32, 32)];
+      int paint[4][3];
+      for (int ch = 0; ch < 3; ++ch) {
+        paint[0][ch] = c1[ch];
+        paint[1][ch] = clamp255(c2[ch] + d);
+        paint[2][ch] = c2[ch];
+        paint[3][ch] = clamp255(c2[ch] - d);
+      }
+      for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 4; ++x) {
+          for (int ch = 0; ch < 3; ++ch)
+            rgb[y * 4 + x][ch] = float(paint[texelIndex(word, x, y)][ch]) / 255.0f;
+        }
+      }
+      return;
+    }
+    if (second[1] < 0 || second[1] > 31) {
+      // H mode.
+      const int r1 = bits(word, 62, 59), g1 = bits(word, 58, 56) << 1 | bits(word, 52, 52),
+                b1 = bits(word, 51, 51) << 3 | bits(word, 49, 47);
+      const int r2 = bits(word, 46, 43), g2 = bits(word, 42, 39), b2 = bits(word, 38, 35);
+      const int order = (r1 << 8 | g1 << 4 | b1) >= (r2 << 8 | g2 << 4 | b2) ? 1 : 0;
+      const int d = kEtcDistances[bits(word, 34, 34) << 2 | bits(word, 32, 32) << 1 | order];
+      const int c1[3] = {extend4(r1), extend4(g1), extend4(b1)};
+      const int c2[3] = {extend4(r2), extend4(g2), extend4(b2)};
+      int paint[4][3];
+      for (int ch = 0; ch < 3; ++ch) {
+        paint[0][ch] = clamp255(c1[ch] + d);
+        paint[1][ch] = clamp255(c1[ch] - d);
+        paint[2][ch] = clamp255(c2[ch] + d);
+        paint[3][ch] = clamp255(c2[ch] - d);
+      }
+      for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 4; ++x) {
+          for (int ch = 0; ch < 3; ++ch)
+            rgb[y * 4 + x][ch] = float(paint[texelIndex(word, x, y)][ch]) / 255.0f;
+        }
+      }
+      return;
+    }
+    if (second[2] < 0 || second[2] > 31) {
+      // Planar mode: three colours (origin, horizontal, vertical) extrapolated linearly.
+      const int o[3] = {
+          extend6(bits(word, 62, 57)), extend7(bits(word, 56, 56) << 6 | bits(word, 54, 49)),
+          extend6(bits(word, 48, 48) << 5 | bits(word, 44, 43) << 3 | bits(word, 41, 39))};
+      const int h[3] = {extend6(bits(word, 38, 34) << 1 | bits(word, 32, 32)),
+                        extend7(bits(word, 31, 25)), extend6(bits(word, 24, 19))};
+      const int v[3] = {extend6(bits(word, 18, 13)), extend7(bits(word, 12, 6)),
+                        extend6(bits(word, 5, 0))};
+      for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 4; ++x) {
+          for (int ch = 0; ch < 3; ++ch) {
+            const int value = (x * (h[ch] - o[ch]) + y * (v[ch] - o[ch]) + 4 * o[ch] + 2) >> 2;
+            rgb[y * 4 + x][ch] = float(clamp255(value)) / 255.0f;
+          }
+        }
+      }
+      return;
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+      base[0][ch] = extend5(five[ch]);
+      base[1][ch] = extend5(second[ch]);
+    }
+  }
+  const int table[2] = {bits(word, 39, 37), bits(word, 36, 34)};
+  const bool flip = bits(word, 32, 32);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const int half = flip ? (y >= 2) : (x >= 2);
+      const int modifier = kEtcModifiers[table[half]][texelIndex(word, x, y)];
+      for (int ch = 0; ch < 3; ++ch)
+        rgb[y * 4 + x][ch] = float(clamp255(base[half][ch] + modifier)) / 255.0f;
+    }
+  }
+}
+
+void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]) {
+  const std::uint64_t word = readBigEndian(in);
+  const int base = bits(word, 63, 56);
+  const int multiplier = bits(word, 55, 52);
+  const int* modifiers = kEacModifiers[bits(word, 51, 48)];
+  for (int x = 0; x < 4; ++x) {
+    for (int y = 0; y < 4; ++y) {
+      const int index = bits(word, 47 - 3 * (x * 4 + y), 45 - 3 * (x * 4 + y));
+      if (elevenBit) {
+        // R11: base * 8 + 4 + modifier * multiplier * 8; a zero multiplier means 1/8.
+        const int step = multiplier == 0 ? modifiers[index] : modifiers[index] * multiplier * 8;
+        values[y * 4 + x] = float(std::clamp(base * 8 + 4 + step, 0, 2047)) / 2047.0f;
+      } else {
+        values[y * 4 + x] = float(clamp255(base + modifiers[index] * multiplier)) / 255.0f;
+      }
+    }
+  }
+}
+
+void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
+                      CompressionQuality quality, std::uint8_t out[8]) {
+  // Target values in the code's units: 0..2047 (R11) or 0..255 (alpha).
+  const double scale = elevenBit ? 2047.0 : 255.0;
+  double target[16];
+  double low = std::numeric_limits<double>::max(), high = std::numeric_limits<double>::lowest();
+  for (int t = 0; t < 16; ++t) {
+    target[t] = std::clamp(double(values[t]), 0.0, 1.0) * scale;
+    if (validMask & (1 << t)) {
+      low = std::min(low, target[t]);
+      high = std::max(high, target[t]);
+    }
+  }
+  if (validMask == 0)
+    low = high = 0.0;
+  // The value a (base, multiplier, modifier) decodes to, in the same units.
+  const auto decoded = [elevenBit](int base, int multiplier, int modifier) {
+    if (elevenBit) {
+      const int step = multiplier == 0 ? modifier : modifier * multiplier * 8;
+      return double(std::clamp(base * 8 + 4 + step, 0, 2047));
+    }
+    return double(clamp255(base + modifier * multiplier));
+  };
+  // Search: every table; multipliers around the one the block's range asks for; bases around
+  // the one that centres the table on the range. Wider for better quality.
+  const int multiplierReach = quality == CompressionQuality::Fast     ? 0
+                              : quality == CompressionQuality::Normal ? 1
+                                                                      : 2;
+  const int baseReach = quality == CompressionQuality::Best ? 3 : 1;
+  double bestError = std::numeric_limits<double>::max();
+  int bestBase = 0, bestMultiplier = 1, bestTable = 0;
+  int bestIndices[16] = {};
+  const double unit = elevenBit ? 8.0 : 1.0;  // value units per base step and per multiplier
+  for (int table = 0; table < 16; ++table) {
+    const int* modifiers = kEacModifiers[table];
+    const int span = modifiers[7] - modifiers[3];  // largest minus smallest modifier
+    const int ideal =
+        std::clamp(int(std::lround((high - low) / (span * unit))), elevenBit ? 0 : 1, 15);
+    const int firstMultiplier = std::max(elevenBit ? 0 : 1, ideal - multiplierReach);
+    const int lastMultiplier = std::min(15, ideal + multiplierReach);
+    for (int multiplier = firstMultiplier; multiplier <= lastMultiplier; ++multiplier) {
+      // Base that puts the table's middle on the range's middle.
+      const double middleModifier = 0.5 * (modifiers[7] + modifiers[3]);
+      const double centre =
+          0.5 * (low + high) - middleModifier * (multiplier == 0 ? 1.0 : multiplier * unit);
+      const int centreBase = int(std::lround(elevenBit ? (centre - 4.0) / 8.0 : centre));
+      for (int base = std::max(0, centreBase - baseReach);
+           base <= std::min(255, centreBase + baseReach); ++base) {
+        double palette[8];
+        for (int i = 0; i < 8; ++i)
+          palette[i] = decoded(base, multiplier, modifiers[i]);
+        double error = 0.0;
+        int indices[16] = {};
+        for (int t = 0; t < 16 && error < bestError; ++t) {
+          double best = std::numeric_limits<double>::max();
+          for (int i = 0; i < 8; ++i) {
+            const double difference = palette[i] - target[t];
+            if (difference * difference < best) {
+              best = difference * difference;
+              indices[t] = i;
+            }
+          }
+          if (validMask & (1 << t))
+            error += best;
+        }
+        if (error < bestError) {
+          bestError = error;
+          bestBase = base;
+          bestMultiplier = multiplier;
+          bestTable = table;
+          std::copy(indices, indices + 16, bestIndices);
+        }
+      }
+    }
+  }
+  std::uint64_t word = std::uint64_t(bestBase) << 56 | std::uint64_t(bestMultiplier) << 52 |
+                       std::uint64_t(bestTable) << 48;
+  for (int x = 0; x < 4; ++x) {
+    for (int y = 0; y < 4; ++y)
+      word |= std::uint64_t(bestIndices[y * 4 + x]) << (45 - 3 * (x * 4 + y));
+  }
+  writeBigEndian(word, out);
+}
+
+void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const BlockTexels& texels,
+                    int validMask, std::uint8_t* out) {
+  const auto channel = [&texels](int ch, float values[16]) {
+    for (int t = 0; t < 16; ++t)
+      values[t] = texels[t][ch];
+  };
+  float values[16];
+  switch (format) {
+    case TextureFormat::EacR11:
+      channel(0, values);
+      encodeEacChannel(values, validMask, true, quality, out);
+      return;
+    case TextureFormat::EacRg11:
+      channel(0, values);
+      encodeEacChannel(values, validMask, true, quality, out);
+      channel(1, values);
+      encodeEacChannel(values, validMask, true, quality, out + 8);
+      return;
+    case TextureFormat::Etc2A:
+      channel(3, values);
+      encodeEacChannel(values, validMask, false, quality, out);
+      out += 8;
+      break;
+    default:
+      break;
+  }
+  // ETC1 colour (android-libetc1 searches every mode it has; it has one quality).
+  etc1_byte rgb[16 * 3];
+  for (int t = 0; t < 16; ++t) {
+    for (int ch = 0; ch < 3; ++ch)
+      rgb[t * 3 + ch] = etc1_byte(std::lround(std::clamp(texels[t][ch], 0.0f, 1.0f) * 255.0f));
+  }
+  // libetc1 averages each sub-block as a sum over its valid texels divided by 8 whatever the
+  // mask, so a partial mask darkens edge blocks. The padding repeats edge texels, which makes
+  // fitting every texel correct; the mask is not passed on.
+  (void)validMask;
+  etc1_encode_block(rgb, 0xFFFF, out);
+}
+
+void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels) {
+  float values[16];
+  float rgb[16][3];
+  switch (format) {
+    case TextureFormat::EacR11:
+      decodeEacChannel(in, true, values);
+      for (int t = 0; t < 16; ++t) {
+        texels[t][0] = values[t];
+        texels[t][1] = texels[t][2] = 0.0f;
+        texels[t][3] = 1.0f;
+      }
+      return;
+    case TextureFormat::EacRg11:
+      decodeEacChannel(in, true, values);
+      for (int t = 0; t < 16; ++t)
+        texels[t][0] = values[t];
+      decodeEacChannel(in + 8, true, values);
+      for (int t = 0; t < 16; ++t) {
+        texels[t][1] = values[t];
+        texels[t][2] = 0.0f;
+        texels[t][3] = 1.0f;
+      }
+      return;
+    case TextureFormat::Etc2A:
+      decodeEacChannel(in, false, values);
+      decodeEtc2Rgb(in + 8, rgb);
+      for (int t = 0; t < 16; ++t) {
+        std::copy(rgb[t], rgb[t] + 3, texels[t]);
+        texels[t][3] = values[t];
+      }
+      return;
+    default:
+      decodeEtc2Rgb(in, rgb);
+      for (int t = 0; t < 16; ++t) {
+        std::copy(rgb[t], rgb[t] + 3, texels[t]);
+        texels[t][3] = 1.0f;
+      }
+      return;
+  }
+}
+
+}  // namespace relief::core

@@ -1,0 +1,76 @@
+// The GPU block-compression formats Relief encodes, decodes and writes (reference 003, ch. 2):
+// S3TC/BC1-BC3, RGTC/BC4-BC5 (3Dc), DXT5nm, ETC1/ETC2/EAC and ASTC LDR. One table says, for
+// each, its block size, what its channels hold, and its codes in the file formats and in GL.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace relief::core {
+
+enum class TextureFormat {
+  Bc1,      // DXT1: RGB 5:6:5 endpoints, 2-bit indices (alpha 1)
+  Bc2,      // DXT3: BC1 colour + explicit 4-bit alpha
+  Bc3,      // DXT5: BC1 colour + interpolated alpha
+  Bc4,      // ATI1/RGTC1: one channel, interpolated like BC3 alpha
+  Bc5,      // ATI2/3Dc/RGTC2: two BC4 channels (normal X, Y; Z rebuilt)
+  Dxt5nm,   // BC3 with normal X in alpha and Y in green (reference 003's fallback)
+  Etc1,     // ETC1: RGB; a valid ETC2 RGB stream
+  Etc2,     // ETC2 RGB
+  Etc2A,    // ETC2 RGBA: EAC alpha block + ETC2 colour block
+  EacR11,   // EAC R11: one channel, 11-bit
+  EacRg11,  // EAC RG11: two channels (normal X, Y; Z rebuilt)
+  Astc4x4,
+  Astc5x5,
+  Astc6x6,
+  Astc8x8,
+};
+
+// What the channels of a format carry, which decides how a map is fed to it and read back.
+enum class FormatLayout {
+  Rgb,       // colour (alpha ignored)
+  Rgba,      // colour and alpha
+  R,         // one channel in red (height, AO, roughness)
+  NormalRg,  // normal X, Y in red, green; Z = sqrt(1 - x^2 - y^2) (reference 003 eq. 2.1)
+  NormalAg,  // normal X in alpha, Y in green (DXT5nm)
+};
+
+enum class CompressionQuality { Fast, Normal, Best };
+
+struct TextureFormatInfo {
+  TextureFormat format;
+  std::string_view name;   // "bc1", as the CLI and presets spell it
+  std::string_view label;  // "BC1 (DXT1)"
+  int blockWidth;
+  int blockHeight;
+  int bytesPerBlock;
+  FormatLayout layout;
+  // KTX2 vkFormat (UNORM; the sRGB variant is srgbVkFormat, 0 when there is none).
+  std::uint32_t vkFormat;
+  std::uint32_t srgbVkFormat;
+  // DDS legacy FourCC, 0 when the format has no DDS representation.
+  std::uint32_t fourCC;
+  // OpenGL internal formats (sRGB 0 when none).
+  std::uint32_t glFormat;
+  std::uint32_t glSrgbFormat;
+};
+
+std::span<const TextureFormatInfo> allTextureFormats();
+const TextureFormatInfo& textureFormatInfo(TextureFormat format);
+std::optional<TextureFormat> findTextureFormat(std::string_view name);
+std::string_view compressionQualityName(CompressionQuality quality);
+std::optional<CompressionQuality> findCompressionQuality(std::string_view name);
+
+double bitsPerPixel(TextureFormat format);
+bool isTwoChannelNormalFormat(TextureFormat format);  // BC5, DXT5nm, EAC RG11
+bool isSingleChannelFormat(TextureFormat format);     // BC4, EAC R11
+bool isAstc(TextureFormat format);
+
+constexpr std::uint32_t makeFourCC(char a, char b, char c, char d) {
+  return std::uint32_t(std::uint8_t(a)) | std::uint32_t(std::uint8_t(b)) << 8 |
+         std::uint32_t(std::uint8_t(c)) << 16 | std::uint32_t(std::uint8_t(d)) << 24;
+}
+
+}  // namespace relief::core
