@@ -129,6 +129,23 @@ std::vector<TextureFormat> formatsForSlot(MapSlot slot) {
   return formats;
 }
 
+MapSlot likelySlot(TextureFormat format) {
+  switch (textureFormatInfo(format).layout) {
+    case FormatLayout::R:
+      return MapSlot::Height;
+    case FormatLayout::NormalRg:
+    case FormatLayout::NormalAg:
+      return MapSlot::Normal;
+    default:
+      return MapSlot::Color;
+  }
+}
+
+int likelySourceChannels(TextureFormat format) {
+  const FormatLayout layout = textureFormatInfo(format).layout;
+  return layout == FormatLayout::Rgba ? 4 : layout == FormatLayout::R ? 1 : 3;
+}
+
 Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
                                       const CompressionSettings& settings,
                                       const WorkControl& control) {

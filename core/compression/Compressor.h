@@ -58,4 +58,9 @@ Result<Image> decodeAsMap(const CompressedTexture& texture, int level = 0);
 bool formatSuitsSlot(TextureFormat format, MapSlot slot);
 std::vector<TextureFormat> formatsForSlot(MapSlot slot);
 
+// For files that do not say what map they hold: what a format's layout suggests (a normal for
+// the two-channel formats, a height for one channel, colour otherwise).
+MapSlot likelySlot(TextureFormat format);
+int likelySourceChannels(TextureFormat format);
+
 }  // namespace relief::core

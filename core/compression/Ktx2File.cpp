@@ -1,0 +1,277 @@
+// KTX2 reading and writing; see TextureFile.h. Layout from the KTX File Format Specification
+// 2.0: identifier, header (vkFormat, typeSize, size, layer/face/level counts, supercompression),
+// index (DFD, key/value data, supercompression data), level index (level 0 first), the Data
+// Format Descriptor, key/value data, then the levels from the smallest to level 0, each at an
+// offset aligned to lcm(block size, 4). The descriptor follows the Khronos Data Format
+// Specification 1.3 for compressed formats: one sample per 64-bit (or 128-bit ASTC) plane.
+#include "core/compression/ByteStream.h"
+#include "core/compression/MipChain.h"
+#include "core/compression/TextureFile.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <numeric>
+
+namespace relief::core {
+namespace {
+
+constexpr std::array<std::uint8_t, 12> kIdentifier = {0xAB, 'K',  'T',  'X',  ' ',  '2',
+                                                      '0',  0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
+constexpr std::size_t kHeaderEnd = 12 + 9 * 4 + 4 * 4 + 2 * 8;  // identifier, header, index
+
+// Khronos Data Format colour models, channel ids and transfer functions.
+constexpr std::uint32_t kModelBc1 = 128, kModelBc2 = 129, kModelBc3 = 130, kModelBc4 = 131,
+                        kModelBc5 = 132, kModelEtc2 = 161, kModelAstc = 162;
+constexpr std::uint32_t kChannelColorBc = 0, kChannelRed = 0, kChannelGreen = 1,
+                        kChannelEtc2Color = 2, kChannelAlpha = 15;
+constexpr std::uint32_t kPrimariesBt709 = 1, kTransferLinear = 1, kTransferSrgb = 2;
+constexpr std::string_view kSlotKey = "ReliefMapSlot", kChannelsKey = "ReliefSourceChannels";
+
+struct Sample {
+  std::uint32_t channel;
+  std::uint32_t bitOffset;
+};
+
+std::uint32_t colourModel(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::Bc1:
+      return kModelBc1;
+    case TextureFormat::Bc2:
+      return kModelBc2;
+    case TextureFormat::Bc3:
+    case TextureFormat::Dxt5nm:
+      return kModelBc3;
+    case TextureFormat::Bc4:
+      return kModelBc4;
+    case TextureFormat::Bc5:
+      return kModelBc5;
+    case TextureFormat::Astc4x4:
+    case TextureFormat::Astc5x5:
+    case TextureFormat::Astc6x6:
+    case TextureFormat::Astc8x8:
+      return kModelAstc;
+    default:
+      return kModelEtc2;
+  }
+}
+
+std::vector<Sample> samples(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::Bc2:
+    case TextureFormat::Bc3:
+    case TextureFormat::Dxt5nm:
+      return {{kChannelAlpha, 0}, {kChannelColorBc, 64}};
+    case TextureFormat::Bc5:
+    case TextureFormat::EacRg11:
+      return {{kChannelRed, 0}, {kChannelGreen, 64}};
+    case TextureFormat::Etc1:
+    case TextureFormat::Etc2:
+      return {{kChannelEtc2Color, 0}};
+    case TextureFormat::Etc2A:
+      return {{kChannelAlpha, 0}, {kChannelEtc2Color, 64}};
+    default:  // BC1 (colour), BC4 and EAC R11 (red), ASTC (data): one sample over the block
+      return {{0, 0}};
+  }
+}
+
+std::vector<std::uint8_t> dataFormatDescriptor(const CompressedTexture& texture) {
+  const TextureFormatInfo& info = textureFormatInfo(texture.format);
+  const std::vector<Sample> blockSamples = samples(texture.format);
+  const std::uint32_t sampleBits = isAstc(texture.format) ? 128 : 64;
+  const std::uint32_t blockSize = 24 + 16 * std::uint32_t(blockSamples.size());
+  ByteWriter out;
+  out.u32(4 + blockSize);        // dfdTotalSize
+  out.u32(0);                    // vendorId 0 (Khronos), descriptorType 0 (basic)
+  out.u32(2 | blockSize << 16);  // versionNumber 2, descriptorBlockSize
+  out.u32(colourModel(texture.format) | kPrimariesBt709 << 8 |
+          (texture.srgb ? kTransferSrgb : kTransferLinear) << 16);  // flags 0: straight alpha
+  out.u32(std::uint32_t(info.blockWidth - 1) | std::uint32_t(info.blockHeight - 1) << 8);
+  out.u32(std::uint32_t(info.bytesPerBlock));  // bytesPlane0
+  out.u32(0);                                  // bytesPlane4..7
+  for (const Sample& sample : blockSamples) {
+    out.u32(sample.bitOffset | (sampleBits - 1) << 16 | sample.channel << 24);
+    out.u32(0);            // sample position 0, 0, 0, 0
+    out.u32(0);            // sampleLower
+    out.u32(0xFFFFFFFFu);  // sampleUpper
+  }
+  return std::move(out.data());
+}
+
+std::vector<std::uint8_t> keyValueData(const CompressedTexture& texture) {
+  // Keys sorted by their bytes, as the specification requires; each entry padded to 4.
+  std::map<std::string, std::string> entries = {
+      {"KTXwriter", "Relief"},
+      {std::string(kSlotKey), std::string(mapSlotName(texture.slot))},
+      {std::string(kChannelsKey), std::to_string(texture.sourceChannels)},
+  };
+  ByteWriter out;
+  for (const auto& [key, value] : entries) {
+    out.u32(std::uint32_t(key.size() + 1 + value.size() + 1));
+    out.text(key);
+    out.u8(0);
+    out.text(value);
+    out.u8(0);
+    out.padTo(4);
+  }
+  return std::move(out.data());
+}
+
+std::optional<TextureFormat> formatForVk(std::uint32_t vkFormat, bool& srgb) {
+  for (const TextureFormatInfo& info : allTextureFormats()) {
+    // DXT5nm shares BC3's code and ETC2 RGB ETC1's; the first row wins (BC3, ETC1 is ETC2's
+    // subset, so the stream is read as ETC2 RGB).
+    if (info.format == TextureFormat::Dxt5nm || info.format == TextureFormat::Etc1)
+      continue;
+    if (info.vkFormat == vkFormat || (info.srgbVkFormat != 0 && info.srgbVkFormat == vkFormat)) {
+      srgb = info.srgbVkFormat == vkFormat;
+      return info.format;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture) {
+  const TextureFormatInfo& info = textureFormatInfo(texture.format);
+  const std::vector<std::uint8_t> dfd = dataFormatDescriptor(texture);
+  const std::vector<std::uint8_t> kvd = keyValueData(texture);
+  const std::size_t levelCount = texture.levels.size();
+  ByteWriter out;
+  out.bytes(kIdentifier.data(), kIdentifier.size());
+  out.u32(texture.srgb && info.srgbVkFormat ? info.srgbVkFormat : info.vkFormat);
+  out.u32(1);  // typeSize: 1 for block-compressed formats
+  out.u32(std::uint32_t(texture.levels.empty() ? 0 : texture.levels[0].width));
+  out.u32(std::uint32_t(texture.levels.empty() ? 0 : texture.levels[0].height));
+  out.u32(0);  // pixelDepth
+  out.u32(0);  // layerCount: not an array
+  out.u32(1);  // faceCount
+  out.u32(std::uint32_t(levelCount));
+  out.u32(0);  // supercompressionScheme: none
+  const std::size_t dfdOffset = kHeaderEnd + levelCount * 24;
+  const std::size_t kvdOffset = dfdOffset + dfd.size();
+  out.u32(std::uint32_t(dfdOffset));
+  out.u32(std::uint32_t(dfd.size()));
+  out.u32(std::uint32_t(kvdOffset));
+  out.u32(std::uint32_t(kvd.size()));
+  out.u64(0);  // sgdByteOffset
+  out.u64(0);  // sgdByteLength
+  const std::size_t levelIndex = out.size();
+  out.zeros(levelCount * 24);
+  out.bytes(dfd.data(), dfd.size());
+  out.bytes(kvd.data(), kvd.size());
+  const std::size_t alignment = std::lcm(std::size_t(info.bytesPerBlock), std::size_t(4));
+  for (std::size_t i = levelCount; i-- > 0;) {  // smallest level first
+    out.padTo(alignment);
+    const CompressedLevel& level = texture.levels[i];
+    out.patchU64(levelIndex + i * 24, out.size());
+    out.patchU64(levelIndex + i * 24 + 8, level.data.size());
+    out.patchU64(levelIndex + i * 24 + 16, level.data.size());  // not supercompressed
+    out.bytes(level.data.data(), level.data.size());
+  }
+  return std::move(out.data());
+}
+
+Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
+                                     const std::string& name) {
+  const auto fail = [&name](const std::string& problem) {
+    return makeError(name + ": " + problem);
+  };
+  if (bytes.size() < kIdentifier.size() ||
+      !std::equal(kIdentifier.begin(), kIdentifier.end(), bytes.begin()))
+    return fail("not a KTX2 file (no KTX 20 identifier)");
+  ByteReader in(bytes, kIdentifier.size());
+  const std::uint32_t vkFormat = in.u32(), typeSize = in.u32(), width = in.u32(), height = in.u32(),
+                      depth = in.u32(), layers = in.u32(), faces = in.u32(), levelCount = in.u32(),
+                      supercompression = in.u32();
+  const std::uint32_t dfdOffset = in.u32(), dfdLength = in.u32();
+  const std::uint32_t kvdOffset = in.u32(), kvdLength = in.u32();
+  in.skip(16);  // supercompression global data: none for the schemes read here
+  if (!in.ok())
+    return fail("the file is shorter than a KTX2 header (" + std::to_string(bytes.size()) +
+                " bytes)");
+  bool srgb = false;
+  const std::optional<TextureFormat> format = formatForVk(vkFormat, srgb);
+  if (!format)
+    return fail("vkFormat " + std::to_string(vkFormat) + " is not one Relief reads");
+  if (typeSize != 1)
+    return fail("typeSize " + std::to_string(typeSize) + " is wrong for a compressed format");
+  if (supercompression != 0)
+    return fail("supercompression scheme " + std::to_string(supercompression) +
+                " is not supported (only uncompressed levels are read)");
+  if (depth > 1 || layers > 1 || faces != 1)
+    return fail("only single 2D textures are read (not arrays, cube maps or volumes)");
+  if (width == 0 || height == 0 || width > kMaxTextureDimension || height > kMaxTextureDimension)
+    return fail("its size " + std::to_string(width) + "x" + std::to_string(height) +
+                " is outside 1.." + std::to_string(kMaxTextureDimension));
+  // levelCount 0 means the base level only, with the rest to be generated (KTX2 3.7).
+  const int levels = int(std::max<std::uint32_t>(levelCount, 1));
+  if (levelCount > std::uint32_t(mipLevelCount(int(width), int(height))))
+    return fail(std::to_string(levelCount) + " mip levels is more than a " + std::to_string(width) +
+                "x" + std::to_string(height) + " texture has");
+
+  CompressedTexture texture;
+  texture.format = *format;
+  texture.srgb = srgb;
+  texture.slot = likelySlot(*format);
+  texture.sourceChannels = likelySourceChannels(*format);
+
+  // Our own keys say what the map was; other writers' files fall back to the layout's guess.
+  if (std::uint64_t(kvdOffset) + kvdLength <= bytes.size() && kvdLength > 0) {
+    std::size_t at = kvdOffset;
+    const std::size_t end = std::size_t(kvdOffset) + kvdLength;
+    while (at + 4 <= end) {
+      ByteReader entry(bytes, at);
+      const std::uint32_t length = entry.u32();
+      if (length == 0 || length > end - at - 4)
+        break;
+      const std::string pair(bytes.begin() + std::ptrdiff_t(at + 4),
+                             bytes.begin() + std::ptrdiff_t(at + 4 + length));
+      const std::size_t zero = pair.find('\0');
+      if (zero != std::string::npos) {
+        const std::string key = pair.substr(0, zero);
+        std::string value = pair.substr(zero + 1);
+        if (!value.empty() && value.back() == '\0')
+          value.pop_back();
+        if (key == kSlotKey) {
+          if (const std::optional<MapSlot> slot = findMapSlot(value))
+            texture.slot = *slot;
+        } else if (key == kChannelsKey && value.size() == 1 && value[0] >= '1' && value[0] <= '4') {
+          texture.sourceChannels = value[0] - '0';
+        }
+      }
+      at += 4 + ((length + 3) / 4) * 4;
+    }
+  }
+  if (std::uint64_t(dfdOffset) + dfdLength > bytes.size())
+    return fail("its data format descriptor lies outside the file");
+  if (texture.slot == MapSlot::Normal && *format == TextureFormat::Bc3)
+    texture.format = TextureFormat::Dxt5nm;  // BC3 holding a normal: X in alpha, Y in green
+
+  int w = int(width), h = int(height);
+  for (int level = 0; level < levels; ++level) {
+    ByteReader entry(bytes, kHeaderEnd + std::size_t(level) * 24);
+    const std::uint64_t offset = entry.u64(), length = entry.u64();
+    if (!entry.ok())
+      return fail("the level index is cut short");
+    const std::uint64_t expected = compressedLevelSize(*format, w, h);
+    if (length != expected)
+      return fail("mip level " + std::to_string(level) + " holds " + std::to_string(length) +
+                  " bytes; a " + std::to_string(w) + "x" + std::to_string(h) + " level needs " +
+                  std::to_string(expected));
+    if (offset > bytes.size() || length > bytes.size() - offset)
+      return fail("mip level " + std::to_string(level) + " lies outside the file (bytes " +
+                  std::to_string(offset) + ".." + std::to_string(offset + length) + " of " +
+                  std::to_string(bytes.size()) + ")");
+    CompressedLevel compressed{w, h, {}};
+    compressed.data.assign(bytes.begin() + std::ptrdiff_t(offset),
+                           bytes.begin() + std::ptrdiff_t(offset + length));
+    texture.levels.push_back(std::move(compressed));
+    w = std::max(1, w / 2);
+    h = std::max(1, h / 2);
+  }
+  return texture;
+}
+
+}  // namespace relief::core

@@ -1,0 +1,73 @@
+// Choosing the container and moving bytes to and from disk; see TextureFile.h.
+#include "core/compression/TextureFile.h"
+
+#include "core/AtomicFile.h"
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
+namespace relief::core {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of("/\\");
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return {};
+  std::string extension = path.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return extension;
+}
+
+}  // namespace
+
+std::optional<TextureContainer> containerForPath(const std::string& path) {
+  const std::string extension = lowerExtension(path);
+  if (extension == "dds")
+    return TextureContainer::Dds;
+  if (extension == "ktx2")
+    return TextureContainer::Ktx2;
+  return std::nullopt;
+}
+
+Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path) {
+  const std::optional<TextureContainer> container = containerForPath(path);
+  if (!container)
+    return makeError(path + ": compressed textures are saved as .dds or .ktx2");
+  std::vector<std::uint8_t> bytes;
+  if (*container == TextureContainer::Dds) {
+    Result<std::vector<std::uint8_t>> dds = encodeDds(texture);
+    if (!dds)
+      return makeError(path + ": " + dds.error());
+    bytes = std::move(dds).value();
+  } else {
+    bytes = encodeKtx2(texture);
+  }
+  return writeFileAtomically(
+      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+Result<CompressedTexture> loadCompressedTexture(const std::string& path) {
+  const std::optional<TextureContainer> container = containerForPath(path);
+  if (!container)
+    return makeError(path + ": not a .dds or .ktx2 file");
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
+    return makeError(path + ": cannot be opened");
+  // Bounded by what a largest legal texture could need, so a huge file is refused before it is
+  // read into memory.
+  file.seekg(0, std::ios::end);
+  const std::streamoff size = file.tellg();
+  constexpr std::streamoff kLimit = std::streamoff(2) << 30;
+  if (size < 0 || size > kLimit)
+    return makeError(path + ": larger than 2 GiB; not a texture Relief reads");
+  file.seekg(0);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  if (!file.read(reinterpret_cast<char*>(bytes.data()), size))
+    return makeError(path + ": could not be read");
+  return *container == TextureContainer::Dds ? decodeDds(bytes, path) : decodeKtx2(bytes, path);
+}
+
+}  // namespace relief::core

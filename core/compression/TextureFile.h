@@ -1,0 +1,45 @@
+// Compressed textures in files: DDS (DirectDraw Surface) and KTX2 (Khronos KTX 2.0).
+//
+// DDS is written with the legacy FourCC codes every reader knows (DXT1, DXT3, DXT5, ATI1,
+// ATI2; DXT5nm is DXT5 with the DDPF_NORMAL flag NVIDIA's tools set), so it holds the BC
+// formats only; files with the DX10 header and DXGI BC1-BC5 codes are read too. KTX2 holds
+// every format by its vkFormat, with a Data Format Descriptor and the mip levels stored smallest
+// first, as the KTX 2.0 specification requires.
+//
+// Readers treat the file as hostile: dimensions and level counts are bounded, sizes are
+// computed in 64 bits and checked against the file length before anything is allocated or
+// read, and every failure names the file and what is wrong with it.
+#pragma once
+
+#include "core/Result.h"
+#include "core/compression/Compressor.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace relief::core {
+
+// The largest width or height a reader accepts (GL_MAX_TEXTURE_SIZE on current GPUs is 16384
+// or 32768).
+inline constexpr int kMaxTextureDimension = 32768;
+
+enum class TextureContainer { Dds, Ktx2 };
+
+// From the extension (.dds, .ktx2), case-insensitive.
+std::optional<TextureContainer> containerForPath(const std::string& path);
+
+// The file's bytes; `name` appears in error messages.
+Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture);
+Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
+                                    const std::string& name);
+std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture);
+Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
+                                     const std::string& name);
+
+// Chooses the container by extension. Saving is atomic: a failed save leaves an existing file
+// as it was.
+Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path);
+Result<CompressedTexture> loadCompressedTexture(const std::string& path);
+
+}  // namespace relief::core

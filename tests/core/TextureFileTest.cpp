@@ -1,0 +1,376 @@
+// DDS and KTX2 files: headers checked field by field against the specifications (Microsoft's
+// DDS guide, KTX 2.0 and the Khronos Data Format Specification), DDS files opened by
+// independent readers (OpenImageIO, Pillow) with the pixels our decoder gives, and hostile
+// files (truncated, wrong sizes, enormous dimensions, too many levels) refused with errors.
+#include "core/compression/ByteStream.h"
+#include "core/compression/Compressor.h"
+#include "core/compression/TextureFile.h"
+#include "support/TestPaths.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <QProcess>
+
+#include <filesystem>
+#include <fstream>
+
+namespace relief::core {
+namespace {
+
+Image testPattern(int width, int height, int channels) {
+  Image image(width, height, channels, ColorSpace::Srgb);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      for (int c = 0; c < channels; ++c) {
+        image.at(x, y, c) =
+            0.5f + 0.45f * std::sin(0.3f * float(x) * float(c + 1) + 0.17f * float(y) - float(c));
+      }
+    }
+  }
+  return image;
+}
+
+Image unitNormals(int width, int height) {
+  Image image(width, height, 3);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float nx = 0.5f * std::sin(0.2f * float(x)), ny = 0.4f * std::cos(0.3f * float(y));
+      const float nz = std::sqrt(1.0f - nx * nx - ny * ny);
+      image.at(x, y, 0) = 0.5f + 0.5f * nx;
+      image.at(x, y, 1) = 0.5f + 0.5f * ny;
+      image.at(x, y, 2) = 0.5f + 0.5f * nz;
+    }
+  }
+  return image;
+}
+
+CompressedTexture compressed(TextureFormat format, int width = 36, int height = 20,
+                             bool mips = true) {
+  const MapSlot slot = likelySlot(format);
+  const Image map = slot == MapSlot::Normal   ? unitNormals(width, height)
+                    : slot == MapSlot::Height ? testPattern(width, height, 1)
+                                              : testPattern(width, height, 4);
+  return compressMap(map, slot, {format, CompressionQuality::Fast, mips}).value();
+}
+
+std::uint32_t u32At(const std::vector<std::uint8_t>& bytes, std::size_t at) {
+  return ByteReader(bytes, at).u32();
+}
+std::uint64_t u64At(const std::vector<std::uint8_t>& bytes, std::size_t at) {
+  return ByteReader(bytes, at).u64();
+}
+
+void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+// --- DDS -------------------------------------------------------------------------------------
+
+TEST(DdsFileTest, HeaderUsesTheLegacyFourCCAndRoundTrips) {
+  const std::pair<TextureFormat, const char*> cases[] = {
+      {TextureFormat::Bc1, "DXT1"}, {TextureFormat::Bc2, "DXT3"}, {TextureFormat::Bc3, "DXT5"},
+      {TextureFormat::Bc4, "ATI1"}, {TextureFormat::Bc5, "ATI2"}, {TextureFormat::Dxt5nm, "DXT5"}};
+  for (const auto& [format, fourCC] : cases) {
+    const CompressedTexture texture = compressed(format);
+    const std::vector<std::uint8_t> bytes = encodeDds(texture).value();
+    EXPECT_EQ(u32At(bytes, 0), makeFourCC('D', 'D', 'S', ' '));
+    EXPECT_EQ(u32At(bytes, 4), 124u);                            // dwSize
+    EXPECT_EQ(u32At(bytes, 12), 20u);                            // dwHeight
+    EXPECT_EQ(u32At(bytes, 16), 36u);                            // dwWidth
+    EXPECT_EQ(u32At(bytes, 20), texture.levels[0].data.size());  // linear size of level 0
+    EXPECT_EQ(u32At(bytes, 28), 6u);                             // 36x20 .. 1x1
+    EXPECT_EQ(u32At(bytes, 76), 32u);                            // ddspf.dwSize
+    EXPECT_EQ(u32At(bytes, 84), makeFourCC(fourCC[0], fourCC[1], fourCC[2], fourCC[3]));
+    // DDPF_FOURCC, and DDPF_NORMAL only for DXT5nm.
+    EXPECT_EQ(u32At(bytes, 80), format == TextureFormat::Dxt5nm ? 0x80000004u : 0x4u);
+    EXPECT_EQ(bytes.size(), 128 + texture.byteSize());
+
+    Result<CompressedTexture> back = decodeDds(bytes, "t.dds");
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_EQ(back->format, format);
+    ASSERT_EQ(back->levels.size(), texture.levels.size());
+    for (std::size_t i = 0; i < texture.levels.size(); ++i)
+      EXPECT_EQ(back->levels[i].data, texture.levels[i].data) << "level " << i;
+  }
+  Result<std::vector<std::uint8_t>> etc = encodeDds(compressed(TextureFormat::Etc2A));
+  ASSERT_FALSE(etc.ok());
+  EXPECT_NE(etc.error().find(".ktx2"), std::string::npos);
+}
+
+TEST(DdsFileTest, Dx10HeadersFromOtherToolsAreRead) {
+  // The same BC3 blocks behind a DX10 header with DXGI_FORMAT_BC3_UNORM_SRGB (78).
+  const CompressedTexture texture = compressed(TextureFormat::Bc3, 8, 8, false);
+  std::vector<std::uint8_t> bytes = encodeDds(texture).value();
+  ByteWriter dx10;
+  for (std::uint32_t value : {78u, 3u, 0u, 1u, 0u})  // format, TEXTURE2D, flags, array 1, misc
+    dx10.u32(value);
+  bytes.insert(bytes.begin() + 128, dx10.data().begin(), dx10.data().end());
+  bytes[84] = 'D', bytes[85] = 'X', bytes[86] = '1', bytes[87] = '0';
+  Result<CompressedTexture> back = decodeDds(bytes, "dx10.dds");
+  ASSERT_TRUE(back.ok()) << back.error();
+  EXPECT_EQ(back->format, TextureFormat::Bc3);
+  EXPECT_TRUE(back->srgb);
+  EXPECT_EQ(back->levels[0].data, texture.levels[0].data);
+}
+
+// The decoded texels as 8-bit values, for comparing with readers that decode to 8 bits.
+float channelOf(const Image& image, int x, int y, int c) {
+  return image.at(x, y, std::min(c, image.channels() - 1));
+}
+
+TEST(DdsFileTest, OpenImageIOReadsOurFilesWithOurPixels) {
+  const std::string folder = test::scratchFolder();
+  for (TextureFormat format : {TextureFormat::Bc1, TextureFormat::Bc2, TextureFormat::Bc3,
+                               TextureFormat::Bc4, TextureFormat::Bc5}) {
+    const CompressedTexture texture = compressed(format, 36, 20, true);
+    const std::string path =
+        folder + "/oiio-" + std::string(textureFormatInfo(format).name) + ".dds";
+    ASSERT_TRUE(saveCompressedTexture(texture, path).ok());
+    const Image ours = decodeLevel(texture).value();
+
+    auto input = OIIO::ImageInput::open(path);
+    ASSERT_TRUE(input) << OIIO::geterror();
+    const OIIO::ImageSpec& spec = input->spec();
+    ASSERT_EQ(spec.width, 36);
+    ASSERT_EQ(spec.height, 20);
+    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) *
+                              std::size_t(spec.nchannels));
+    ASSERT_TRUE(input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    // OpenImageIO gives BC4 one channel and BC5 red and green (with a blue it may rebuild);
+    // the channels both hold must agree within the rounding of 8-bit interpolation.
+    const int compared = format == TextureFormat::Bc4   ? 1
+                         : format == TextureFormat::Bc5 ? 2
+                         : format == TextureFormat::Bc1 ? 3
+                                                        : 4;
+    double worst = 0.0;
+    for (int y = 0; y < 20; ++y) {
+      for (int x = 0; x < 36; ++x) {
+        for (int c = 0; c < std::min(compared, spec.nchannels); ++c) {
+          const float theirs =
+              pixels[(std::size_t(y) * 36 + std::size_t(x)) * std::size_t(spec.nchannels) +
+                     std::size_t(c)];
+          worst = std::max(worst, double(std::abs(theirs - channelOf(ours, x, y, c))));
+        }
+      }
+    }
+    EXPECT_LE(worst, 1.01 / 255.0) << textureFormatInfo(format).name;
+  }
+}
+
+TEST(DdsFileTest, PillowReadsOurFilesWithOurPixels) {
+  const std::string folder = test::scratchFolder();
+  // Pillow (9.4, Debian 12) reads DXT1, DXT3, DXT5, ATI1 and ATI2.
+  for (TextureFormat format : {TextureFormat::Bc1, TextureFormat::Bc2, TextureFormat::Bc3,
+                               TextureFormat::Bc4, TextureFormat::Bc5}) {
+    const CompressedTexture texture = compressed(format, 36, 20, false);
+    const std::string name = std::string(textureFormatInfo(format).name);
+    const std::string dds = folder + "/pil-" + name + ".dds";
+    const std::string raw = folder + "/pil-" + name + ".raw";
+    ASSERT_TRUE(saveCompressedTexture(texture, dds).ok());
+    QProcess python;
+    python.start("/usr/bin/python3",
+                 {"-c",
+                  "import sys; from PIL import Image; im = Image.open(sys.argv[1]); "
+                  "im = im.convert('RGBA'); open(sys.argv[2], 'wb').write(im.tobytes()); "
+                  "print(im.size[0], im.size[1])",
+                  QString::fromStdString(dds), QString::fromStdString(raw)});
+    ASSERT_TRUE(python.waitForFinished(60000));
+    ASSERT_EQ(python.exitCode(), 0) << python.readAllStandardError().toStdString();
+    EXPECT_EQ(python.readAllStandardOutput().trimmed().toStdString(), "36 20");
+    std::ifstream file(raw, std::ios::binary);
+    std::vector<unsigned char> rgba(36 * 20 * 4);
+    ASSERT_TRUE(file.read(reinterpret_cast<char*>(rgba.data()), std::streamsize(rgba.size())));
+    const Image ours = decodeLevel(texture).value();
+    // Pillow shows BC4 as grey (L), BC5 as red and green.
+    const int compared = format == TextureFormat::Bc4   ? 1
+                         : format == TextureFormat::Bc5 ? 2
+                         : format == TextureFormat::Bc1 ? 3
+                                                        : 4;
+    double worst = 0.0;
+    for (int y = 0; y < 20; ++y) {
+      for (int x = 0; x < 36; ++x) {
+        for (int c = 0; c < compared; ++c) {
+          const float theirs =
+              float(rgba[(std::size_t(y) * 36 + std::size_t(x)) * 4 + std::size_t(c)]) / 255.0f;
+          worst = std::max(worst, double(std::abs(theirs - channelOf(ours, x, y, c))));
+        }
+      }
+    }
+    EXPECT_LE(worst, 1.01 / 255.0) << name;
+  }
+}
+
+// --- KTX2 ------------------------------------------------------------------------------------
+
+TEST(Ktx2FileTest, HeaderIndexAndDescriptorFollowTheSpecification) {
+  const CompressedTexture texture = compressed(TextureFormat::Astc6x6, 37, 23, true);
+  ASSERT_EQ(texture.levels.size(), 6u);  // 37x23, 18x11, 9x5, 4x2, 2x1, 1x1
+  const std::vector<std::uint8_t> bytes = encodeKtx2(texture);
+  const std::uint8_t identifier[12] = {0xAB, 'K',  'T',  'X',  ' ',  '2',
+                                       '0',  0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
+  EXPECT_TRUE(std::equal(identifier, identifier + 12, bytes.begin()));
+  EXPECT_EQ(u32At(bytes, 12), 166u);  // VK_FORMAT_ASTC_6x6_SRGB_BLOCK (a colour map)
+  EXPECT_EQ(u32At(bytes, 16), 1u);    // typeSize
+  EXPECT_EQ(u32At(bytes, 20), 37u);
+  EXPECT_EQ(u32At(bytes, 24), 23u);
+  EXPECT_EQ(u32At(bytes, 28), 0u);  // pixelDepth
+  EXPECT_EQ(u32At(bytes, 32), 0u);  // layerCount
+  EXPECT_EQ(u32At(bytes, 36), 1u);  // faceCount
+  EXPECT_EQ(u32At(bytes, 40), 6u);  // levelCount
+  EXPECT_EQ(u32At(bytes, 44), 0u);  // supercompressionScheme
+  const std::uint32_t dfdOffset = u32At(bytes, 48), dfdLength = u32At(bytes, 52);
+  const std::uint32_t kvdOffset = u32At(bytes, 56), kvdLength = u32At(bytes, 60);
+  EXPECT_EQ(dfdOffset, 80u + 6u * 24u);  // right after the level index
+  EXPECT_EQ(kvdOffset, dfdOffset + dfdLength);
+  EXPECT_EQ(kvdLength % 4, 0u);
+  EXPECT_EQ(u64At(bytes, 64), 0u);  // sgdByteOffset
+  EXPECT_EQ(u64At(bytes, 72), 0u);
+
+  // Level index: level 0 first; data stored smallest level first, each aligned to 16 (the
+  // lcm of the 16-byte block and 4), lengths equal to whole blocks.
+  std::uint64_t previousOffset = bytes.size();
+  for (std::size_t level = 0; level < 6; ++level) {
+    const std::uint64_t offset = u64At(bytes, 80 + level * 24);
+    const std::uint64_t length = u64At(bytes, 88 + level * 24);
+    EXPECT_EQ(u64At(bytes, 96 + level * 24), length);  // uncompressedByteLength
+    EXPECT_EQ(length, texture.levels[level].data.size());
+    EXPECT_EQ(offset % 16, 0u);
+    EXPECT_LT(offset, previousOffset) << "level " << level << " must precede the larger ones";
+    previousOffset = offset;
+    EXPECT_TRUE(std::equal(texture.levels[level].data.begin(), texture.levels[level].data.end(),
+                           bytes.begin() + std::ptrdiff_t(offset)));
+  }
+  EXPECT_EQ(u64At(bytes, 80) + u64At(bytes, 88), bytes.size());  // level 0 ends the file
+
+  // Data Format Descriptor: total size, then a basic block (version 2) of 24 + 16 bytes.
+  EXPECT_EQ(u32At(bytes, dfdOffset), dfdLength);
+  EXPECT_EQ(u32At(bytes, dfdOffset + 4), 0u);  // vendor Khronos, type basic
+  EXPECT_EQ(u32At(bytes, dfdOffset + 8), 2u | 40u << 16);
+  const std::uint32_t model = u32At(bytes, dfdOffset + 12);
+  EXPECT_EQ(model & 0xFF, 162u);                          // KHR_DF_MODEL_ASTC
+  EXPECT_EQ((model >> 8) & 0xFF, 1u);                     // BT.709 primaries
+  EXPECT_EQ((model >> 16) & 0xFF, 2u);                    // sRGB transfer
+  EXPECT_EQ(u32At(bytes, dfdOffset + 16), 5u | 5u << 8);  // texelBlockDimension 6x6, minus one
+  EXPECT_EQ(u32At(bytes, dfdOffset + 20), 16u);           // bytesPlane0
+  EXPECT_EQ(u32At(bytes, dfdOffset + 28), 127u << 16);    // one 128-bit sample, channel 0
+  EXPECT_EQ(u32At(bytes, dfdOffset + 40), 0xFFFFFFFFu);   // sampleUpper
+
+  // Key/value data holds the writer and, sorted after it by byte order... all keys sorted.
+  const std::string kvd(bytes.begin() + kvdOffset, bytes.begin() + kvdOffset + kvdLength);
+  EXPECT_NE(kvd.find("KTXwriter"), std::string::npos);
+  EXPECT_LT(kvd.find("KTXwriter"), kvd.find("ReliefMapSlot"));
+
+  Result<CompressedTexture> back = decodeKtx2(bytes, "t.ktx2");
+  ASSERT_TRUE(back.ok()) << back.error();
+  EXPECT_EQ(back->format, TextureFormat::Astc6x6);
+  EXPECT_TRUE(back->srgb);
+  EXPECT_EQ(back->slot, MapSlot::Color);
+  EXPECT_EQ(back->sourceChannels, 4);
+  for (std::size_t level = 0; level < 6; ++level)
+    EXPECT_EQ(back->levels[level].data, texture.levels[level].data);
+}
+
+TEST(Ktx2FileTest, EveryFormatRoundTripsWithItsDescriptor) {
+  for (const TextureFormatInfo& info : allTextureFormats()) {
+    const CompressedTexture texture = compressed(info.format, 20, 12, true);
+    const std::vector<std::uint8_t> bytes = encodeKtx2(texture);
+    Result<CompressedTexture> back = decodeKtx2(bytes, "t.ktx2");
+    ASSERT_TRUE(back.ok()) << info.name << ": " << back.error();
+    // ETC1 is written as ETC2 RGB (its superset); everything else comes back as it went.
+    EXPECT_EQ(back->format, info.format == TextureFormat::Etc1 ? TextureFormat::Etc2 : info.format)
+        << info.name;
+    EXPECT_EQ(back->slot, texture.slot) << info.name;
+    EXPECT_EQ(back->levels.size(), texture.levels.size());
+    EXPECT_EQ(back->levels.back().data, texture.levels.back().data);
+    // Two planes of 64 bits for the formats that pair two blocks: BC2/BC3, BC5, ETC2 RGBA, RG11.
+    const std::uint32_t dfd = u32At(bytes, 48);
+    const std::uint32_t samples = ((u32At(bytes, dfd + 8) >> 16) - 24) / 16;
+    EXPECT_EQ(samples, info.bytesPerBlock == 16 && !isAstc(info.format) ? 2u : 1u) << info.name;
+    EXPECT_EQ(u32At(bytes, dfd + 20), std::uint32_t(info.bytesPerBlock)) << info.name;
+  }
+}
+
+// --- Hostile files ---------------------------------------------------------------------------
+
+TEST(TextureFileHostileTest, EveryTruncationIsAnErrorNotACrash) {
+  for (TextureContainer container : {TextureContainer::Dds, TextureContainer::Ktx2}) {
+    const CompressedTexture texture = compressed(TextureFormat::Bc3, 16, 8, true);
+    const std::vector<std::uint8_t> whole =
+        container == TextureContainer::Dds ? encodeDds(texture).value() : encodeKtx2(texture);
+    for (std::size_t length = 0; length < whole.size(); ++length) {
+      const std::vector<std::uint8_t> cut(whole.begin(), whole.begin() + std::ptrdiff_t(length));
+      const Result<CompressedTexture> result = container == TextureContainer::Dds
+                                                   ? decodeDds(cut, "cut.dds")
+                                                   : decodeKtx2(cut, "cut.ktx2");
+      ASSERT_FALSE(result.ok()) << "accepted a file cut to " << length << " bytes";
+      EXPECT_EQ(result.error().rfind("cut.", 0), 0u) << result.error();  // names the file
+    }
+  }
+}
+
+TEST(TextureFileHostileTest, WrongSizesAndEnormousDimensionsAreRefused) {
+  const CompressedTexture texture = compressed(TextureFormat::Bc1, 16, 8, true);
+  const std::vector<std::uint8_t> dds = encodeDds(texture).value();
+  const std::vector<std::uint8_t> ktx = encodeKtx2(texture);
+  const auto patched = [](std::vector<std::uint8_t> bytes, std::size_t at, std::uint64_t value,
+                          int width) {
+    for (int i = 0; i < width; ++i)
+      bytes[at + std::size_t(i)] = std::uint8_t(value >> (8 * i));
+    return bytes;
+  };
+  struct Case {
+    const char* what;
+    std::vector<std::uint8_t> bytes;
+    bool ktx;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"DDS 2^30 wide", patched(dds, 16, 1u << 30, 4), false, "outside"},
+      {"DDS zero height", patched(dds, 12, 0, 4), false, "outside"},
+      {"DDS 40 levels", patched(dds, 28, 40, 4), false, "mip levels"},
+      {"DDS unknown FourCC", patched(dds, 84, makeFourCC('B', 'C', '7', 'X'), 4), false, "FourCC"},
+      {"DDS wide enough to need more data", patched(dds, 16, 4096, 4), false, "ends inside"},
+      {"KTX2 4 billion wide", patched(ktx, 20, 0xFFFFFFFFu, 4), true, "outside"},
+      {"KTX2 40 levels", patched(ktx, 40, 40, 4), true, "mip levels"},
+      {"KTX2 level 0 too short", patched(ktx, 88, 8, 8), true, "holds 8 bytes"},
+      {"KTX2 level 0 past the end", patched(ktx, 80, ~std::uint64_t(0) - 4, 8), true,
+       "outside the file"},
+      {"KTX2 descriptor past the end", patched(ktx, 52, 0x7FFFFFFF, 4), true, "descriptor"},
+      {"KTX2 unknown vkFormat", patched(ktx, 12, 37, 4), true, "vkFormat"},
+      {"KTX2 supercompressed", patched(ktx, 44, 2, 4), true, "supercompression"},
+      {"KTX2 a cube map", patched(ktx, 36, 6, 4), true, "2D"},
+  };
+  for (const Case& c : cases) {
+    const Result<CompressedTexture> result =
+        c.ktx ? decodeKtx2(c.bytes, "bad.ktx2") : decodeDds(c.bytes, "bad.dds");
+    ASSERT_FALSE(result.ok()) << c.what;
+    EXPECT_NE(result.error().find(c.message), std::string::npos)
+        << c.what << ": " << result.error();
+  }
+  // KTX2 levelCount 0 means "the base level only" (KTX 2.0, section 3.7), not an error.
+  Result<CompressedTexture> base = decodeKtx2(patched(ktx, 40, 0, 4), "zero.ktx2");
+  ASSERT_TRUE(base.ok()) << base.error();
+  EXPECT_EQ(base->levels.size(), 1u);
+}
+
+TEST(TextureFileHostileTest, SavingFailsCleanlyAndLoadingNamesTheFile) {
+  const std::string folder = test::scratchFolder();
+  const CompressedTexture texture = compressed(TextureFormat::Bc1, 8, 8, false);
+  EXPECT_FALSE(saveCompressedTexture(texture, folder + "/missing/folder/x.dds").ok());
+  EXPECT_FALSE(saveCompressedTexture(texture, folder + "/x.png").ok());
+  // A failed save leaves the old file as it was.
+  const std::string path = folder + "/kept.dds";
+  ASSERT_TRUE(saveCompressedTexture(texture, path).ok());
+  const auto before = std::filesystem::file_size(path);
+  EXPECT_FALSE(saveCompressedTexture(compressed(TextureFormat::Etc1, 8, 8, false), path).ok());
+  EXPECT_EQ(std::filesystem::file_size(path), before);
+  writeBytes(folder + "/garbage.ktx2", {1, 2, 3});
+  Result<CompressedTexture> garbage = loadCompressedTexture(folder + "/garbage.ktx2");
+  ASSERT_FALSE(garbage.ok());
+  EXPECT_NE(garbage.error().find("garbage.ktx2"), std::string::npos);
+  EXPECT_FALSE(loadCompressedTexture(folder + "/absent.dds").ok());
+}
+
+}  // namespace
+}  // namespace relief::core
