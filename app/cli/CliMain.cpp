@@ -1,5 +1,6 @@
 // relief-cli: Relief's command-line twin. Dispatches to one command per verb.
 #include "CliCommon.h"
+#include "CompressCommand.h"
 #include "ExportCommand.h"
 #include "GenerateCommand.h"
 #include "InfoCommand.h"
@@ -22,6 +23,9 @@ const char* kUsage =
     "  info     Print an image's size, channels, bit depth and colour space\n"
     "  preset   validate FILE: check a .relief preset; info FILE: print what it holds\n"
     "  export   Export a preset as a package, glTF 2.0 or a Godot 4 material\n"
+    "  compress Compress a map into BC1-BC5, DXT5nm, ETC1/ETC2, EAC or ASTC (DDS, KTX2)\n"
+    "  decode   Decode a DDS or KTX2 file to an image\n"
+    "  compare  Print quality metrics between a reference and a candidate image or texture\n"
     "\n"
     "Run 'relief-cli <command> --help' for a command's options.\n";
 
@@ -47,6 +51,12 @@ int main(int argc, char* argv[]) {
     return runPreset(QCoreApplication::arguments());
   if (command == QStringLiteral("export"))
     return runExport(QCoreApplication::arguments());
+  if (command == QStringLiteral("compress"))
+    return runCompress(QCoreApplication::arguments());
+  if (command == QStringLiteral("decode"))
+    return runDecode(QCoreApplication::arguments());
+  if (command == QStringLiteral("compare"))
+    return runCompare(QCoreApplication::arguments());
   printError(QStringLiteral("unknown command '%1'").arg(command));
   printOut(QString::fromUtf8(kUsage));
   return kExitUsage;

@@ -5,6 +5,9 @@
 #include "support/TestPaths.h"
 
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QProcessEnvironment>
 
@@ -512,9 +515,126 @@ TEST(Cli, ExportRefusesBadRequests) {
   EXPECT_NE(lenient.err.find("warning"), std::string::npos) << lenient.err;
 }
 
+// A 256x256 crop of a sample map, so that compression under the sanitizers stays quick.
+std::string croppedSample(const std::string& file) {
+  const core::Image full = core::loadImage(sourcePath("samples/" + file)).value();
+  core::Image crop(256, 256, full.channels(), full.colorSpace());
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x)
+      std::copy_n(full.pixel(x + 300, y + 300), full.channels(), crop.pixel(x, y));
+  }
+  const std::string path = scratchFolder() + "/crop-" + file.substr(file.find('/') + 1);
+  EXPECT_TRUE(core::saveImage(crop, path).ok());
+  return path;
+}
+
+QJsonObject jsonOf(const CliRun& run) {
+  QJsonParseError error;
+  const QJsonDocument document =
+      QJsonDocument::fromJson(QByteArray::fromStdString(run.out), &error);
+  EXPECT_EQ(error.error, QJsonParseError::NoError) << run.out;
+  return document.object();
+}
+
+TEST(Cli, CompressWritesDdsAndKtx2WithMetrics) {
+  const std::string folder = scratchFolder();
+  const std::string colour = croppedSample("tiles/tiles_color.png");
+  CliRun bc1 = runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(colour),
+                       QStringLiteral("--format"), QStringLiteral("bc1"), QStringLiteral("--mips"),
+                       QStringLiteral("--out"), q(folder + "/c.dds"), QStringLiteral("--metrics"),
+                       QStringLiteral("json")});
+  ASSERT_EQ(bc1.exitCode, 0) << bc1.err;
+  const QJsonObject metrics = jsonOf(bc1);
+  EXPECT_EQ(metrics["format"].toString(), QStringLiteral("bc1"));
+  EXPECT_DOUBLE_EQ(metrics["bitsPerPixel"].toDouble(), 4.0);
+  EXPECT_DOUBLE_EQ(metrics["ratioToSource"].toDouble(), 6.0);  // reference 003's 6:1
+  EXPECT_GT(metrics["psnr"].toDouble(), 35.0);
+  EXPECT_EQ(metrics["channels"].toArray().size(), 3);
+  // 256x256 with 9 levels: 64^2 + 32^2 + 16^2 + 8^2 + 4^2 + 2^2 + 1 + 1 + 1 = 5463 blocks of
+  // 8 bytes, after the 128-byte header.
+  EXPECT_EQ(std::filesystem::file_size(folder + "/c.dds"), 128u + 8u * 5463u);
+
+  // decode gives back the same texels compare measures: the PSNR printed for the DDS file and
+  // for its decoded PNG agree (the PNG stores 16 bits, far finer than the error).
+  CliRun decode = runCli({QStringLiteral("decode"), q(folder + "/c.dds"), QStringLiteral("--out"),
+                          q(folder + "/c.png")});
+  ASSERT_EQ(decode.exitCode, 0) << decode.err;
+  CliRun viaTexture = runCli(
+      {QStringLiteral("compare"), q(colour), q(folder + "/c.dds"), QStringLiteral("--json")});
+  CliRun viaImage = runCli(
+      {QStringLiteral("compare"), q(colour), q(folder + "/c.png"), QStringLiteral("--json")});
+  ASSERT_EQ(viaTexture.exitCode, 0) << viaTexture.err;
+  ASSERT_EQ(viaImage.exitCode, 0) << viaImage.err;
+  EXPECT_NEAR(jsonOf(viaTexture)["psnr"].toDouble(), metrics["psnr"].toDouble(), 1e-6);
+  EXPECT_NEAR(jsonOf(viaImage)["psnr"].toDouble(), metrics["psnr"].toDouble(), 0.05);
+  EXPECT_FALSE(jsonOf(viaImage).contains("bitsPerPixel"));
+
+  // A normal map in BC5 inside KTX2: the angular error is reported, and the slot travels in the
+  // file, so compare measures angles without --normal.
+  const std::string normal = croppedSample("tiles/tiles_normal.png");
+  CliRun bc5 = runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(normal),
+                       QStringLiteral("--format"), QStringLiteral("bc5"),
+                       QStringLiteral("--normal"), QStringLiteral("--out"), q(folder + "/n.ktx2")});
+  ASSERT_EQ(bc5.exitCode, 0) << bc5.err;
+  CliRun angles = runCli({QStringLiteral("compare"), q(normal), q(folder + "/n.ktx2")});
+  ASSERT_EQ(angles.exitCode, 0) << angles.err;
+  EXPECT_NE(angles.out.find("angular error: mean"), std::string::npos) << angles.out;
+
+  // A mip level of an ASTC KTX2 decodes at its own size.
+  CliRun astc = runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(colour),
+                        QStringLiteral("--format"), QStringLiteral("astc6x6"),
+                        QStringLiteral("--quality"), QStringLiteral("fast"),
+                        QStringLiteral("--mips"), QStringLiteral("--out"), q(folder + "/a.ktx2")});
+  ASSERT_EQ(astc.exitCode, 0) << astc.err;
+  CliRun level = runCli({QStringLiteral("decode"), q(folder + "/a.ktx2"), QStringLiteral("--level"),
+                         QStringLiteral("2"), QStringLiteral("--out"), q(folder + "/a2.png")});
+  ASSERT_EQ(level.exitCode, 0) << level.err;
+  const core::Image decoded = core::loadImage(folder + "/a2.png").value();
+  EXPECT_EQ(decoded.width(), 64);
+}
+
+TEST(Cli, CompressDecodeAndCompareRefuseBadInput) {
+  const std::string folder = scratchFolder();
+  const std::string colour = croppedSample("tiles/tiles_color.png");
+  const auto compress = [&](const QString& format, const std::string& out) {
+    return runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(colour),
+                   QStringLiteral("--format"), format, QStringLiteral("--out"), q(out)});
+  };
+  CliRun unknown = compress(QStringLiteral("bc7"), folder + "/x.dds");
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.err.find("bc7"), std::string::npos);
+  CliRun etcInDds = compress(QStringLiteral("etc2"), folder + "/x.dds");
+  EXPECT_EQ(etcInDds.exitCode, 2);
+  EXPECT_NE(etcInDds.err.find(".ktx2"), std::string::npos) << etcInDds.err;
+  CliRun colourInBc5 = compress(QStringLiteral("bc5"), folder + "/x.dds");
+  EXPECT_EQ(colourInBc5.exitCode, 2);
+  EXPECT_NE(colourInBc5.err.find("--normal"), std::string::npos) << colourInBc5.err;
+  CliRun missing = runCli({QStringLiteral("compress"), QStringLiteral("--in"),
+                           q(folder + "/absent.png"), QStringLiteral("--format"),
+                           QStringLiteral("bc1"), QStringLiteral("--out"), q(folder + "/x.dds")});
+  expectCleanFailure(missing, folder + "/absent.png", "not found");
+
+  // A truncated DDS: decode and compare name the file and fail.
+  ASSERT_EQ(compress(QStringLiteral("bc3"), folder + "/whole.dds").exitCode, 0);
+  const std::string whole = readBytes(folder + "/whole.dds");
+  writeBytes(folder + "/cut.dds", whole.substr(0, whole.size() / 2));
+  expectCleanFailure(runCli({QStringLiteral("decode"), q(folder + "/cut.dds"),
+                             QStringLiteral("--out"), q(folder + "/cut.png")}),
+                     folder + "/cut.dds", "ends inside");
+  EXPECT_FALSE(std::filesystem::exists(folder + "/cut.png"));
+  expectCleanFailure(runCli({QStringLiteral("compare"), q(colour), q(folder + "/cut.dds")}),
+                     folder + "/cut.dds", "ends inside");
+  // Different sizes.
+  CliRun sizes = runCli(
+      {QStringLiteral("compare"), q(colour), q(sourcePath("samples/tiles/tiles_color.png"))});
+  EXPECT_EQ(sizes.exitCode, 1);
+  EXPECT_NE(sizes.err.find("same size"), std::string::npos) << sizes.err;
+}
+
 TEST(Cli, EveryCommandHasHelp) {
   for (const QString& command :
-       {QStringLiteral("render"), QStringLiteral("info"), QStringLiteral("export")}) {
+       {QStringLiteral("render"), QStringLiteral("info"), QStringLiteral("export"),
+        QStringLiteral("compress"), QStringLiteral("decode"), QStringLiteral("compare")}) {
     CliRun run = runCli({command, QStringLiteral("--help")});
     EXPECT_EQ(run.exitCode, 0) << command.toStdString();
     EXPECT_NE(run.out.find("Usage: relief-cli " + command.toStdString()), std::string::npos)

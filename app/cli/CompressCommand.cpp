@@ -1,0 +1,326 @@
+// CompressCommand; see CompressCommand.h.
+#include "CompressCommand.h"
+
+#include "CliCommon.h"
+#include "core/ImageIO.h"
+#include "core/compression/CompressionReport.h"
+#include "core/compression/Compressor.h"
+#include "core/compression/TextureFile.h"
+
+#include <QElapsedTimer>
+#include <QJsonDocument>
+
+namespace relief::cli {
+namespace {
+
+QString qstr(std::string_view text) {
+  return QString::fromUtf8(text.data(), qsizetype(text.size()));
+}
+
+QString formatNames() {
+  std::vector<core::TextureFormat> formats;
+  for (const core::TextureFormatInfo& info : core::allTextureFormats())
+    formats.push_back(info.format);
+  return enumNames<core::TextureFormat>(
+      formats, [](core::TextureFormat f) { return core::textureFormatInfo(f).name; });
+}
+
+// The parallax height scale the height metrics assume when none is given: the samples' value.
+constexpr double kDefaultHeightScale = 0.05;
+
+// A candidate: an ordinary image, or a compressed texture decoded as the map it holds.
+struct Candidate {
+  core::Image image;
+  std::optional<core::CompressedTexture> texture;
+};
+
+core::Result<Candidate> loadCandidate(const std::string& path) {
+  if (core::containerForPath(path)) {
+    core::Result<core::CompressedTexture> texture = core::loadCompressedTexture(path);
+    if (!texture)
+      return core::makeError(texture.error());
+    core::Result<core::Image> image = core::decodeAsMap(texture.value());
+    if (!image)
+      return core::makeError(path + ": " + image.error());
+    return Candidate{std::move(image).value(), std::move(texture).value()};
+  }
+  core::Result<core::Image> image = core::loadImage(path);
+  if (!image)
+    return core::makeError(image.error());
+  return Candidate{std::move(image).value(), std::nullopt};
+}
+
+void addSlotOptions(QCommandLineParser& parser) {
+  parser.addOption(QCommandLineOption(QStringLiteral("normal"),
+                                      QStringLiteral("The map is a normal map (tangent space, "
+                                                     "0.5 + 0.5 n): angular error is measured.")));
+  parser.addOption(QCommandLineOption(
+      QStringLiteral("height"),
+      QStringLiteral("The map is a height map: the error is also given as parallax shift.")));
+  parser.addOption(QCommandLineOption(
+      QStringLiteral("height-scale"),
+      QStringLiteral("Parallax height scale for the shift (default %1).").arg(kDefaultHeightScale),
+      QStringLiteral("scale")));
+}
+
+std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser) {
+  if (parser.isSet(QStringLiteral("normal")))
+    return core::MapSlot::Normal;
+  if (parser.isSet(QStringLiteral("height")))
+    return core::MapSlot::Height;
+  return std::nullopt;
+}
+
+}  // namespace
+
+int runCompress(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral(
+      "Compress a map into a GPU block format and save it as DDS (BC formats) or KTX2 (all)."));
+  parser.addOption(
+      QCommandLineOption(QStringLiteral("in"), QStringLiteral("The map."), QStringLiteral("file")));
+  parser.addOption(
+      QCommandLineOption(QStringLiteral("format"), formatNames(), QStringLiteral("format")));
+  parser.addOption(QCommandLineOption(
+      QStringLiteral("quality"),
+      QStringLiteral("fast|normal|best (default normal): libsquish range fit, cluster fit, "
+                     "iterative cluster fit; astcenc's presets; EAC search depth."),
+      QStringLiteral("quality")));
+  parser.addOption(QCommandLineOption(QStringLiteral("mips"),
+                                      QStringLiteral("Write a full mip chain, each level "
+                                                     "filtered for the map's kind.")));
+  parser.addOption(QCommandLineOption(
+      QStringLiteral("out"), QStringLiteral("Output .dds or .ktx2 file."), QStringLiteral("file")));
+  parser.addOption(QCommandLineOption(
+      QStringLiteral("metrics"),
+      QStringLiteral("Print the quality metrics: text or json (on standard output)."),
+      QStringLiteral("text|json")));
+  addSlotOptions(parser);
+  if (auto exit = parseOrExit(parser, arguments,
+                              QStringLiteral("relief-cli compress --in MAP --format FORMAT "
+                                             "--out MAP.dds|MAP.ktx2 [options]")))
+    return *exit;
+  if (!parser.isSet(QStringLiteral("in")) || !parser.isSet(QStringLiteral("out")) ||
+      !parser.isSet(QStringLiteral("format"))) {
+    printError(QStringLiteral("compress needs --in MAP, --format FORMAT and --out FILE"));
+    return kExitUsage;
+  }
+  const std::optional<core::TextureFormat> format =
+      core::findTextureFormat(parser.value(QStringLiteral("format")).toStdString());
+  if (!format) {
+    printError(QStringLiteral("--format: unknown format '%1' (one of %2)")
+                   .arg(parser.value(QStringLiteral("format")), formatNames()));
+    return kExitUsage;
+  }
+  core::CompressionQuality quality = core::CompressionQuality::Normal;
+  if (parser.isSet(QStringLiteral("quality"))) {
+    const auto found =
+        core::findCompressionQuality(parser.value(QStringLiteral("quality")).toStdString());
+    if (!found) {
+      printError(QStringLiteral("--quality: '%1' is not fast, normal or best")
+                     .arg(parser.value(QStringLiteral("quality"))));
+      return kExitUsage;
+    }
+    quality = *found;
+  }
+  const QString metrics = parser.value(QStringLiteral("metrics"));
+  if (parser.isSet(QStringLiteral("metrics")) && metrics != QStringLiteral("json") &&
+      metrics != QStringLiteral("text")) {
+    printError(QStringLiteral("--metrics: '%1' is not text or json").arg(metrics));
+    return kExitUsage;
+  }
+  const std::optional<double> heightScale =
+      numberOption(parser, QStringLiteral("height-scale"), kDefaultHeightScale);
+  if (!heightScale)
+    return kExitUsage;
+  const std::string outPath = parser.value(QStringLiteral("out")).toStdString();
+  const std::optional<core::TextureContainer> container = core::containerForPath(outPath);
+  if (!container) {
+    printError(QString::fromStdString(outPath) +
+               QStringLiteral(": the output must end in .dds or .ktx2"));
+    return kExitUsage;
+  }
+  if (*container == core::TextureContainer::Dds && core::textureFormatInfo(*format).fourCC == 0) {
+    printError(QString::fromStdString(outPath) + QStringLiteral(": ") +
+               qstr(core::textureFormatInfo(*format).label) +
+               QStringLiteral(" has no DDS format that common readers open; use .ktx2"));
+    return kExitUsage;
+  }
+
+  const std::string inPath = parser.value(QStringLiteral("in")).toStdString();
+  core::Result<core::Image> map = core::loadImage(inPath);
+  if (!map) {
+    printError(QString::fromStdString(map.error()));
+    return kExitFailure;
+  }
+  // Without --normal or --height a map is colour, except that a one-channel format holds data.
+  const core::MapSlot slot = slotOption(parser).value_or(
+      core::isSingleChannelFormat(*format) ? core::MapSlot::Height : core::MapSlot::Color);
+  if (!core::formatSuitsSlot(*format, slot)) {
+    printError(qstr(core::textureFormatInfo(*format).label) +
+               QStringLiteral(" cannot hold a %1 map; pass --normal or --height if the map is "
+                              "one, or choose another format")
+                   .arg(qstr(core::mapSlotLabel(slot)).toLower()));
+    return kExitUsage;
+  }
+  if (map->channels() >= 3 && core::isSingleChannelFormat(*format)) {
+    printError(QStringLiteral("warning: %1 has %2 channels; %3 keeps only the first (red)")
+                   .arg(QString::fromStdString(inPath))
+                   .arg(map->channels())
+                   .arg(qstr(core::textureFormatInfo(*format).label)));
+  }
+  QElapsedTimer timer;
+  timer.start();
+  core::Result<core::CompressedTexture> texture = core::compressMap(
+      map.value(), slot, {*format, quality, parser.isSet(QStringLiteral("mips"))});
+  if (!texture) {
+    printError(QString::fromStdString(inPath) + QStringLiteral(": ") +
+               QString::fromStdString(texture.error()));
+    return kExitFailure;
+  }
+  const double seconds = double(timer.nsecsElapsed()) * 1e-9;
+  if (core::Status saved = core::saveCompressedTexture(texture.value(), outPath); !saved) {
+    printError(QString::fromStdString(saved.error()));
+    return kExitFailure;
+  }
+  if (parser.isSet(QStringLiteral("metrics"))) {
+    core::CompressionReport report = core::makeCompressionReport(
+        map.value(), core::decodeAsMap(texture.value()).value(), slot, *heightScale);
+    report.format = *format;
+    report.size = core::measureSize(*format, map->channels(), texture->byteSize());
+    report.encodeSeconds = seconds;
+    if (metrics == QStringLiteral("json")) {
+      printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(report)).toJson()));
+    } else {
+      printOut(QString::fromStdString(core::reportToText(report)));
+    }
+  } else {
+    printOut(QStringLiteral("%1: %2, %3x%4, %5 level(s), %6 bytes, %7 s\n")
+                 .arg(QString::fromStdString(outPath), qstr(core::textureFormatInfo(*format).label))
+                 .arg(map->width())
+                 .arg(map->height())
+                 .arg(texture->levels.size())
+                 .arg(texture->byteSize())
+                 .arg(seconds, 0, 'f', 2));
+  }
+  return kExitOk;
+}
+
+int runDecode(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral(
+      "Decode a DDS or KTX2 file to an image: the map it holds (normal Z rebuilt from X and Y "
+      "for two-channel formats), or with --raw the RGBA texels a GPU samples."));
+  parser.addPositionalArgument(QStringLiteral("texture"), QStringLiteral(".dds or .ktx2 file"));
+  parser.addOption(QCommandLineOption(QStringLiteral("out"), QStringLiteral("Output image."),
+                                      QStringLiteral("file")));
+  parser.addOption(QCommandLineOption(
+      QStringLiteral("level"), QStringLiteral("Mip level (default 0)."), QStringLiteral("n")));
+  parser.addOption(
+      QCommandLineOption(QStringLiteral("raw"), QStringLiteral("Write the texels unchanged.")));
+  if (auto exit = parseOrExit(parser, arguments,
+                              QStringLiteral("relief-cli decode F.dds|F.ktx2 --out F.png")))
+    return *exit;
+  if (parser.positionalArguments().size() != 1 || !parser.isSet(QStringLiteral("out"))) {
+    printError(QStringLiteral("decode takes one .dds or .ktx2 file and --out FILE"));
+    return kExitUsage;
+  }
+  const std::optional<double> level = numberOption(parser, QStringLiteral("level"), 0.0);
+  if (!level)
+    return kExitUsage;
+  const std::string path = parser.positionalArguments().front().toStdString();
+  core::Result<core::CompressedTexture> texture = core::loadCompressedTexture(path);
+  if (!texture) {
+    printError(QString::fromStdString(texture.error()));
+    return kExitFailure;
+  }
+  core::Result<core::Image> image = parser.isSet(QStringLiteral("raw"))
+                                        ? core::decodeLevel(texture.value(), int(*level))
+                                        : core::decodeAsMap(texture.value(), int(*level));
+  if (!image) {
+    printError(QString::fromStdString(path + ": " + image.error()));
+    return kExitFailure;
+  }
+  const std::string out = parser.value(QStringLiteral("out")).toStdString();
+  if (core::Status saved = core::saveImage(image.value(), out); !saved) {
+    printError(QString::fromStdString(saved.error()));
+    return kExitFailure;
+  }
+  printOut(
+      QStringLiteral("%1: %2 %3x%4 level %5 of %6\n")
+          .arg(QString::fromStdString(out), qstr(core::textureFormatInfo(texture->format).label))
+          .arg(image->width())
+          .arg(image->height())
+          .arg(int(*level))
+          .arg(texture->levels.size()));
+  return kExitOk;
+}
+
+int runCompare(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral(
+      "Measure how far CANDIDATE is from REFERENCE: PSNR per channel and overall, SSIM, "
+      "maximum error; angular error for normal maps; parallax shift for height maps; size "
+      "and rate when CANDIDATE is a DDS or KTX2 file."));
+  parser.addPositionalArgument(QStringLiteral("reference"), QStringLiteral("The original."));
+  parser.addPositionalArgument(QStringLiteral("candidate"),
+                               QStringLiteral("An image or a .dds/.ktx2 file."));
+  parser.addOption(
+      QCommandLineOption(QStringLiteral("json"), QStringLiteral("Print the metrics as JSON.")));
+  addSlotOptions(parser);
+  if (auto exit =
+          parseOrExit(parser, arguments,
+                      QStringLiteral("relief-cli compare REFERENCE CANDIDATE [--normal] [--json]")))
+    return *exit;
+  if (parser.positionalArguments().size() != 2) {
+    printError(QStringLiteral("compare takes two files: REFERENCE CANDIDATE"));
+    return kExitUsage;
+  }
+  const std::optional<double> heightScale =
+      numberOption(parser, QStringLiteral("height-scale"), kDefaultHeightScale);
+  if (!heightScale)
+    return kExitUsage;
+  const std::string referencePath = parser.positionalArguments()[0].toStdString();
+  const std::string candidatePath = parser.positionalArguments()[1].toStdString();
+  core::Result<core::Image> reference = core::loadImage(referencePath);
+  if (!reference) {
+    printError(QString::fromStdString(reference.error()));
+    return kExitFailure;
+  }
+  core::Result<Candidate> candidate = loadCandidate(candidatePath);
+  if (!candidate) {
+    printError(QString::fromStdString(candidate.error()));
+    return kExitFailure;
+  }
+  const core::Image& image = candidate->image;
+  if (image.width() != reference->width() || image.height() != reference->height()) {
+    printError(QStringLiteral("%1 is %2x%3 but %4 is %5x%6; compare needs the same size")
+                   .arg(QString::fromStdString(candidatePath))
+                   .arg(image.width())
+                   .arg(image.height())
+                   .arg(QString::fromStdString(referencePath))
+                   .arg(reference->width())
+                   .arg(reference->height()));
+    return kExitFailure;
+  }
+  const core::MapSlot slot = slotOption(parser).value_or(
+      candidate->texture ? candidate->texture->slot : core::MapSlot::Color);
+  if (slot == core::MapSlot::Normal && (reference->channels() < 3 || image.channels() < 3)) {
+    printError(QStringLiteral("--normal needs RGB normal maps (0.5 + 0.5 n) on both sides"));
+    return kExitFailure;
+  }
+  core::CompressionReport report =
+      core::makeCompressionReport(reference.value(), image, slot, *heightScale);
+  if (candidate->texture) {
+    report.format = candidate->texture->format;
+    report.size = core::measureSize(candidate->texture->format, reference->channels(),
+                                    candidate->texture->byteSize());
+  }
+  if (parser.isSet(QStringLiteral("json")))
+    printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(report)).toJson()));
+  else
+    printOut(QString::fromStdString(core::reportToText(report)));
+  return kExitOk;
+}
+
+}  // namespace relief::cli

@@ -1,0 +1,42 @@
+// One comparison of a map with its compressed version, in the numbers that suit the map's kind
+// (CompressionMetrics.h), as a person reads them and as JSON for pipelines. Shared by
+// relief-cli's compress and compare commands and the Compress panel's tables.
+#pragma once
+
+#include "core/Image.h"
+#include "core/MapSlot.h"
+#include "core/compression/CompressionMetrics.h"
+
+#include <QJsonObject>
+
+#include <optional>
+#include <string>
+
+namespace relief::core {
+
+struct CompressionReport {
+  MapSlot slot = MapSlot::Color;
+  ImageError image;
+  std::optional<NormalError> normal;  // normal maps
+  std::optional<HeightError> height;  // height maps
+  double heightScale = 0.0;
+  std::optional<TextureFormat> format;  // when the candidate is a compressed texture
+  std::optional<SizeFigures> size;
+  double encodeSeconds = 0.0;  // 0 when not measured
+};
+
+// `reference` and `candidate` must be the same size (checked by the caller: the message names
+// the files). For a normal map the angle is measured; for a height map the parallax shift at
+// `heightScale`.
+CompressionReport makeCompressionReport(const Image& reference, const Image& candidate,
+                                        MapSlot slot, double heightScale);
+
+// The figure "compare all formats" ranks by, larger is better: PSNR in dB for colour and data,
+// minus the mean angle in degrees for normals.
+double headlineQuality(const CompressionReport& report);
+std::string headlineQualityName(MapSlot slot);
+
+QJsonObject reportToJson(const CompressionReport& report);
+std::string reportToText(const CompressionReport& report);
+
+}  // namespace relief::core
