@@ -80,8 +80,10 @@ void decodeChannel(const std::uint8_t* in, BlockTexels& texels, int channel) {
   std::uint64_t bits = 0;
   for (int i = 0; i < 6; ++i)
     bits |= std::uint64_t(in[2 + i]) << (8 * i);
+  // Decoders disagree in the last bit here (D3D10 interpolates in float; Mesa in integers,
+  // rounding down); rounding to the nearest 8-bit value keeps us within one step of both.
   for (int t = 0; t < 16; ++t)
-    texels[t][channel] = values[(bits >> (3 * t)) & 7] / 255.0f;
+    texels[t][channel] = std::round(values[(bits >> (3 * t)) & 7]) / 255.0f;
 }
 
 }  // namespace
