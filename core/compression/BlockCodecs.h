@@ -12,8 +12,10 @@ namespace relief::core {
 
 using BlockTexels = float[16][4];
 
-// BC1-BC5 and DXT5nm: encoded with libsquish (range fit, cluster fit, iterative cluster fit
-// for fast, normal, best), decoded by our own decoder (libsquish decodes BC4/BC5 wrongly).
+// BC1-BC3 and DXT5nm: encoded with libsquish (range fit, cluster fit, iterative cluster fit
+// for fast, normal, best). BC4 and BC5: our own encoder (libsquish's misses the 1 s target for
+// 4096^2 BC5; see BcCodec.cpp). All decoded by our own decoder (libsquish decodes BC4/BC5
+// wrongly, PLATFORM.md).
 // `perceptual` weighs colour error by luminance (colour maps); data maps weigh channels alike.
 void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool perceptual,
                    const BlockTexels& texels, int validMask, std::uint8_t* out);

@@ -18,37 +18,48 @@ bool isBcFamily(TextureFormat format) {
   return format <= TextureFormat::Dxt5nm;
 }
 
-// The map as four channels in the layout the format's encoder expects.
-Image prepare(const Image& map, MapSlot slot, TextureFormat format) {
+// One texel of the map as four channels in the layout the format's encoder expects.
+void prepareTexel(const float* in, int channels, bool twoChannelNormal, float* out) {
+  if (channels >= 3) {
+    out[0] = in[0];
+    out[1] = in[1];
+    out[2] = in[2];
+  } else {
+    out[0] = out[1] = out[2] = in[0];
+  }
+  out[3] = channels == 4 ? in[3] : channels == 2 ? in[1] : 1.0f;
+  if (twoChannelNormal) {
+    out[2] = 0.0f;  // rebuilt from X and Y when decoded
+    out[3] = 1.0f;
+  }
+}
+
+bool isTwoChannelNormal(MapSlot slot, TextureFormat format) {
   const FormatLayout layout = textureFormatInfo(format).layout;
-  const int channels = map.channels();
+  return slot == MapSlot::Normal &&
+         (layout == FormatLayout::NormalRg || layout == FormatLayout::NormalAg);
+}
+
+// The whole map prepared, for astcenc (which takes whole images).
+Image prepare(const Image& map, MapSlot slot, TextureFormat format) {
+  const bool twoChannelNormal = isTwoChannelNormal(slot, format);
   Image rgba(map.width(), map.height(), 4, map.colorSpace());
   for (std::size_t p = 0; p < map.pixelCount(); ++p) {
-    const float* in = map.data() + p * std::size_t(channels);
-    float* out = rgba.data() + p * 4;
-    if (channels >= 3) {
-      out[0] = in[0];
-      out[1] = in[1];
-      out[2] = in[2];
-    } else {
-      out[0] = out[1] = out[2] = in[0];
-    }
-    out[3] = channels == 4 ? in[3] : channels == 2 ? in[1] : 1.0f;
-    if (slot == MapSlot::Normal &&
-        (layout == FormatLayout::NormalRg || layout == FormatLayout::NormalAg)) {
-      out[2] = 0.0f;  // rebuilt from X and Y when decoded
-      out[3] = 1.0f;
-    }
+    prepareTexel(map.data() + p * std::size_t(map.channels()), map.channels(), twoChannelNormal,
+                 rgba.data() + p * 4);
   }
   return rgba;
 }
 
-// Encodes one level with the block codecs, on all cores.
-bool encodeBlocks(const Image& rgba, const CompressionSettings& settings, bool perceptual,
+// Encodes one level with the block codecs, on all cores. Texels are prepared block by block
+// (no full-size copy of a large map).
+bool encodeBlocks(const Image& map, MapSlot slot, const CompressionSettings& settings,
                   std::vector<std::uint8_t>& out, const WorkControl& control) {
   const TextureFormatInfo& info = textureFormatInfo(settings.format);
-  const int width = rgba.width(), height = rgba.height();
+  const int width = map.width(), height = map.height();
   const int blocksX = (width + 3) / 4, blocksY = (height + 3) / 4;
+  const bool twoChannelNormal = isTwoChannelNormal(slot, settings.format);
+  const bool perceptual = slot == MapSlot::Color;
   out.assign(std::size_t(blocksX) * std::size_t(blocksY) * std::size_t(info.bytesPerBlock), 0);
   return parallelFor(
       blocksY,
@@ -62,8 +73,8 @@ bool encodeBlocks(const Image& rgba, const CompressionSettings& settings, bool p
               if (x < width && y < height)
                 validMask |= 1 << (j * 4 + i);
               // Padding repeats the edge, so even a fit that saw these texels stays close.
-              const float* texel = rgba.pixel(std::min(x, width - 1), std::min(y, height - 1));
-              std::copy(texel, texel + 4, texels[j * 4 + i]);
+              prepareTexel(map.pixel(std::min(x, width - 1), std::min(y, height - 1)),
+                           map.channels(), twoChannelNormal, texels[j * 4 + i]);
             }
           }
           std::uint8_t* block =
@@ -161,27 +172,32 @@ Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
   texture.sourceChannels = map.channels();
   texture.srgb = slot == MapSlot::Color && textureFormatInfo(settings.format).srgbVkFormat != 0;
 
-  std::vector<Image> chain;
-  if (settings.mipmaps)
-    chain = buildMipChain(map, slot);
-  else
-    chain.push_back(map);
+  // Level 0 is the map itself (not copied: a 4096^2 float map is 200 MB).
+  std::vector<Image> smaller;
+  if (settings.mipmaps) {
+    for (int i = 1, count = mipLevelCount(map.width(), map.height()); i < count; ++i)
+      smaller.push_back(downsampleForSlot(i == 1 ? map : smaller.back(), slot));
+  }
+  std::vector<const Image*> chain = {&map};
+  for (const Image& level : smaller)
+    chain.push_back(&level);
   double totalPixels = 0.0;
-  for (const Image& level : chain)
-    totalPixels += double(level.pixelCount());
+  for (const Image* level : chain)
+    totalPixels += double(level->pixelCount());
 
   double done = 0.0;
-  for (const Image& level : chain) {
+  for (const Image* levelPointer : chain) {
+    const Image& level = *levelPointer;
     const double share = double(level.pixelCount()) / totalPixels;
     const WorkControl part = slice(control, done / totalPixels, share);
-    const Image rgba = prepare(level, slot, settings.format);
     CompressedLevel compressed{level.width(), level.height(), {}};
     if (isAstc(settings.format)) {
-      auto encoded = encodeAstc(settings.format, settings.quality, texture.srgb, rgba, part);
+      auto encoded = encodeAstc(settings.format, settings.quality, texture.srgb,
+                                prepare(level, slot, settings.format), part);
       if (!encoded)
         return makeError(encoded.error());
       compressed.data = std::move(encoded).value();
-    } else if (!encodeBlocks(rgba, settings, slot == MapSlot::Color, compressed.data, part)) {
+    } else if (!encodeBlocks(level, slot, settings, compressed.data, part)) {
       return makeError("cancelled");
     }
     texture.levels.push_back(std::move(compressed));

@@ -11,6 +11,8 @@
 #include "core/compression/TextureFormat.h"
 #include "support/TestPaths.h"
 
+#include <squish.h>
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -425,9 +427,10 @@ TEST(CompressionQualityTest, ColourFormatsMeetTheirFloors) {
 
 TEST(CompressionQualityTest, NormalFormatsMeetTheirFloors) {
   const Image normal = sampleCrop("bricks/bricks_normal.png");
-  // Mean angular error ceilings in degrees. Measured: BC5 0.676, EAC RG11 0.542 (11 bits),
-  // DXT5nm 0.986 (green interpolates between 6-bit endpoints), BC1 1.548.
-  const std::pair<TextureFormat, double> ceilings[] = {{TextureFormat::Bc5, 0.8},
+  // Mean angular error ceilings in degrees. Measured: BC5 0.532 (our encoder; libsquish's gave
+  // 0.676), EAC RG11 0.542 (11 bits), DXT5nm 0.989 (green interpolates between 6-bit
+  // endpoints), BC1 1.548.
+  const std::pair<TextureFormat, double> ceilings[] = {{TextureFormat::Bc5, 0.65},
                                                        {TextureFormat::EacRg11, 0.65},
                                                        {TextureFormat::Dxt5nm, 1.15},
                                                        {TextureFormat::Bc1, 1.8}};
@@ -449,9 +452,9 @@ TEST(CompressionQualityTest, NormalFormatsMeetTheirFloors) {
 
 TEST(CompressionQualityTest, HeightFormatsMeetTheirFloors) {
   const Image height = sampleCrop("bricks/bricks_height.png");
-  // Measured: BC4 47.26 dB, mean shift 0.0282 texels; EAC R11 49.84 dB, 0.0172 texels (shift
+  // Measured: BC4 48.45 dB, mean shift 0.0255 texels; EAC R11 49.84 dB, 0.0172 texels (shift
   // at height scale 0.05 on the 256-texel crop).
-  const std::pair<TextureFormat, double> floors[] = {{TextureFormat::Bc4, 46.5},
+  const std::pair<TextureFormat, double> floors[] = {{TextureFormat::Bc4, 47.5},
                                                      {TextureFormat::EacR11, 49.0}};
   for (const auto& [format, floor] : floors) {
     const CompressedTexture texture = compressMap(height, MapSlot::Height, {format}).value();
@@ -463,6 +466,32 @@ TEST(CompressionQualityTest, HeightFormatsMeetTheirFloors) {
     EXPECT_GT(psnr, floor) << textureFormatInfo(format).name;
     EXPECT_LT(shift.meanTexels, 0.035) << textureFormatInfo(format).name;
   }
+}
+
+TEST(CompressionQualityTest, OurBc4EncoderIsAtLeastAsGoodAsLibsquish) {
+  // BC4/BC5 use our encoder for speed (BcCodec.cpp); it must not cost quality against the
+  // library it replaces. Both encode the same height crop; both are decoded by our decoder.
+  const Image height = sampleCrop("bricks/bricks_height.png");
+  const CompressedTexture ours =
+      compressMap(height, MapSlot::Height, {TextureFormat::Bc4, CompressionQuality::Fast}).value();
+  CompressedTexture squished = ours;
+  std::uint8_t* block = squished.levels[0].data.data();
+  for (int by = 0; by < 64; ++by) {
+    for (int bx = 0; bx < 64; ++bx, block += 8) {
+      squish::u8 rgba[64];
+      for (int t = 0; t < 16; ++t) {
+        const float v = height.at(bx * 4 + t % 4, by * 4 + t / 4, 0);
+        rgba[t * 4] = squish::u8(std::lround(v * 255.0f));
+        rgba[t * 4 + 1] = rgba[t * 4 + 2] = 0;
+        rgba[t * 4 + 3] = 255;
+      }
+      squish::Compress(rgba, block, squish::kBc4);
+    }
+  }
+  const double oursPsnr = measureImageError(height, decodeAsMap(ours).value()).psnr;
+  const double squishPsnr = measureImageError(height, decodeAsMap(squished).value()).psnr;
+  std::printf("measured BC4 fast: ours %.2f dB, libsquish %.2f dB\n", oursPsnr, squishPsnr);
+  EXPECT_GE(oursPsnr, squishPsnr);
 }
 
 }  // namespace
