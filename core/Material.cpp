@@ -11,7 +11,14 @@ void Material::setMap(MapSlot slot, std::shared_ptr<const Image> image, std::str
     retagged->setColorSpace(mapSlotColorSpace(slot));
     image = std::move(retagged);
   }
-  m_maps[std::size_t(slot)] = MaterialMap{std::move(image), std::move(sourcePath)};
+  m_maps[std::size_t(slot)] = MaterialMap{std::move(image), std::move(sourcePath), nullptr};
+}
+
+void Material::setCompressedMap(MapSlot slot, std::shared_ptr<const CompressedTexture> texture,
+                                std::shared_ptr<const Image> decoded) {
+  std::string sourcePath = map(slot).sourcePath;
+  setMap(slot, std::move(decoded), std::move(sourcePath));
+  m_maps[std::size_t(slot)].compressed = std::move(texture);
 }
 
 void Material::setParameter(ParamId id, double value) {

@@ -13,9 +13,14 @@
 
 namespace relief::core {
 
+struct CompressedTexture;
+
 struct MaterialMap {
   std::shared_ptr<const Image> image;  // null when the slot is empty
   std::string sourcePath;              // the file it came from; empty for generated maps
+  // A compression preview: the GPU blocks, with `image` their decoded map (for everything that
+  // reads texels on the CPU). The renderer uploads the blocks natively when it can.
+  std::shared_ptr<const CompressedTexture> compressed;
 };
 
 class Material {
@@ -31,6 +36,10 @@ class Material {
   // The image is tagged with the slot's colour space (colour sRGB, the rest linear).
   void setMap(MapSlot slot, std::shared_ptr<const Image> image, std::string sourcePath = {});
   void clearMap(MapSlot slot) { m_maps[std::size_t(slot)] = {}; }
+  // Replaces a slot's map by a compressed version of it (`decoded` is its decoded map); the
+  // source path stays, so the material still names where the original came from.
+  void setCompressedMap(MapSlot slot, std::shared_ptr<const CompressedTexture> texture,
+                        std::shared_ptr<const Image> decoded);
 
   Technique technique() const { return m_technique; }
   void setTechnique(Technique technique) { m_technique = technique; }

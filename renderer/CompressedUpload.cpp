@@ -74,7 +74,11 @@ std::unique_ptr<QOpenGLTexture> createCompressedTexture(const core::CompressedTe
   QOpenGLExtraFunctions& gl = *QOpenGLContext::currentContext()->extraFunctions();
   auto result = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
   result->create();
-  result->bind();
+  // Restore whatever the active unit had bound (the renderer binds maps unit by unit and may
+  // create this texture in between), as QOpenGLTexture's own uploads do.
+  GLint previous = 0;
+  gl.glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
+  gl.glBindTexture(GL_TEXTURE_2D, result->textureId());
   while (gl.glGetError() != GL_NO_ERROR) {
   }
   for (std::size_t level = 0; level < texture.levels.size(); ++level) {
@@ -93,7 +97,7 @@ std::unique_ptr<QOpenGLTexture> createCompressedTexture(const core::CompressedTe
   if (texture.format == core::TextureFormat::Dxt5nm)
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R, GL_ALPHA);
   const bool failed = gl.glGetError() != GL_NO_ERROR;
-  result->release();
+  gl.glBindTexture(GL_TEXTURE_2D, GLuint(previous));
   if (failed)
     return nullptr;
   return result;

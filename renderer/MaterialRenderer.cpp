@@ -1,6 +1,8 @@
 // MaterialRenderer; see MaterialRenderer.h.
 #include "renderer/MaterialRenderer.h"
 
+#include "core/compression/Compressor.h"
+#include "renderer/CompressedUpload.h"
 #include "renderer/ShaderVariant.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -170,6 +172,12 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   for (MapSlot slot : core::kAllMapSlots) {
     m_textures.texture(material, slot).bind(unsigned(kFirstMapUnit + int(slot)));
   }
+  // A natively uploaded two-channel normal (BC5, EAC RG11, DXT5nm swizzled) has no Z texel.
+  const auto& normal = material.map(MapSlot::Normal).compressed;
+  program.setUniformValue(
+      "uNormalTwoChannel",
+      normal && core::isTwoChannelNormalFormat(normal->format) &&
+          m_textures.uploadedNatively(material, MapSlot::Normal).value_or(false));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glClear(GL_DEPTH_BUFFER_BIT);
@@ -178,6 +186,24 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   m_mesh.draw(*this);
   program.release();
   glDisable(GL_DEPTH_TEST);
+}
+
+std::string MaterialRenderer::compressedUploadSummary(const core::Material& material) {
+  std::string summary;
+  for (MapSlot slot : core::kAllMapSlots) {
+    const auto& compressed = material.map(slot).compressed;
+    if (!compressed)
+      continue;
+    const bool native = m_textures.uploadedNatively(material, slot).value_or(false);
+    if (!summary.empty())
+      summary += "; ";
+    summary += std::string(core::mapSlotLabel(slot)) + " " +
+               std::string(core::textureFormatInfo(compressed->format).label) +
+               (native ? " uploaded natively"
+                       : " decoded by Relief (the driver lacks " +
+                             formatRequirement(compressed->format) + ")");
+  }
+  return summary;
 }
 
 void MaterialRenderer::drawBackground(const RenderView& view) {

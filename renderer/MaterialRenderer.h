@@ -48,6 +48,11 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
 
   // Largest width or height renderToImage accepts on this GPU.
   int maxImageSize();
+  // How the compressed previews in `material` reach the GPU, one clause per slot ("Normal BC5
+  // (ATI2, 3Dc) uploaded natively"); empty when it has none. Needs the context current.
+  std::string compressedUploadSummary(const core::Material& material);
+  // See TextureCache::setNativeCompressedUploads.
+  void setNativeCompressedUploads(bool native) { m_textures.setNativeCompressedUploads(native); }
   // GL_RENDERER and GL_VERSION, for the status bar and reports.
   std::string rendererDescription();
 

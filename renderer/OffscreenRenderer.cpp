@@ -58,6 +58,11 @@ void OffscreenRenderer::setMaterial(const core::Material& material) {
     m_renderer->setMaterial(material);
 }
 
+void OffscreenRenderer::setNativeCompressedUploads(bool native) {
+  if (makeCurrent())
+    m_renderer->setNativeCompressedUploads(native);
+}
+
 core::Result<core::Image> OffscreenRenderer::render(const FrameSettings& frame, int width,
                                                     int height) {
   if (!makeCurrent())

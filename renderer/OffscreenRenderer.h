@@ -30,6 +30,8 @@ class OffscreenRenderer {
 
   void setMesh(const core::Mesh& mesh);
   void setMaterial(const core::Material& material);
+  // Compressed previews uploaded as blocks (default) or decoded by core.
+  void setNativeCompressedUploads(bool native);
   // Rows top first: sRGB RGBA8 values for Display output (exactly what the viewport shows for
   // the same frame), RGBA32F for data outputs.
   core::Result<core::Image> render(const FrameSettings& frame, int width, int height);

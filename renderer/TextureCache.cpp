@@ -1,6 +1,10 @@
 // TextureCache; see TextureCache.h.
 #include "renderer/TextureCache.h"
 
+#include "core/compression/Compressor.h"
+#include "core/compression/MipChain.h"
+#include "renderer/CompressedUpload.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -48,11 +52,10 @@ float channelValue(const float* pixel, int channels, int c) {
 }
 
 template <class T, class Convert>
-std::vector<T> packFlipped(const Image& image, int outChannels, Convert convert) {
+std::vector<T> pack(const Image& image, int outChannels, Convert convert) {
   std::vector<T> packed(image.pixelCount() * std::size_t(outChannels));
   for (int y = 0; y < image.height(); ++y) {
-    T* row = &packed[std::size_t(image.height() - 1 - y) * std::size_t(image.width()) *
-                     std::size_t(outChannels)];
+    T* row = &packed[std::size_t(y) * std::size_t(image.width()) * std::size_t(outChannels)];
     for (int x = 0; x < image.width(); ++x) {
       const float* pixel = image.pixel(x, y);
       for (int c = 0; c < outChannels; ++c) {
@@ -73,43 +76,99 @@ std::uint16_t toUnorm16(float v) {
 
 }  // namespace
 
-std::unique_ptr<QOpenGLTexture> createMapTexture(const Image& image, MapSlot slot) {
-  auto texture = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
-  texture->setSize(image.width(), image.height());
-  texture->setMipLevels(texture->maximumMipLevels());
-  texture->setWrapMode(QOpenGLTexture::Repeat);
-  texture->setMinMagFilters(QOpenGLTexture::LinearMipMapLinear, QOpenGLTexture::Linear);
-  QOpenGLPixelTransferOptions unpack;
-  unpack.setAlignment(1);
+namespace {
 
+// Storage format of a slot's texture and the pixel layout its texels are given in.
+void setSlotFormat(QOpenGLTexture& texture, MapSlot slot) {
   switch (slot) {
-    case MapSlot::Color: {
+    case MapSlot::Color:
       // Colour is sRGB-encoded; sRGB storage is exact for 8-bit sources and lets the sampler
       // filter in linear light. 16-bit colour sources lose their extra bits here.
-      const auto texels = packFlipped<std::uint8_t>(image, 4, toUnorm8);
-      texture->setFormat(QOpenGLTexture::SRGB8_Alpha8);
-      texture->allocateStorage(QOpenGLTexture::RGBA, QOpenGLTexture::UInt8);
-      texture->setData(0, QOpenGLTexture::RGBA, QOpenGLTexture::UInt8, texels.data(), &unpack);
+      texture.setFormat(QOpenGLTexture::SRGB8_Alpha8);
+      break;
+    case MapSlot::Normal:
+      // 16-bit unsigned normalised: exact for 8- and 16-bit files, 4x finer than 8 bits for EXR.
+      texture.setFormat(QOpenGLTexture::RGBA16_UNorm);
+      break;
+    default:
+      // Height, AO, roughness: one float channel keeps 16-bit and float files exact.
+      texture.setFormat(QOpenGLTexture::R32F);
+      break;
+  }
+}
+
+void uploadLevel(QOpenGLTexture& texture, int level, const Image& image, MapSlot slot) {
+  QOpenGLPixelTransferOptions unpack;
+  unpack.setAlignment(1);
+  switch (slot) {
+    case MapSlot::Color: {
+      const auto texels = pack<std::uint8_t>(image, 4, toUnorm8);
+      texture.setData(level, QOpenGLTexture::RGBA, QOpenGLTexture::UInt8, texels.data(), &unpack);
       break;
     }
     case MapSlot::Normal: {
-      // 16-bit unsigned normalised: exact for 8- and 16-bit files, 4x finer than 8 bits for EXR.
-      const auto texels = packFlipped<std::uint16_t>(image, 4, toUnorm16);
-      texture->setFormat(QOpenGLTexture::RGBA16_UNorm);
-      texture->allocateStorage(QOpenGLTexture::RGBA, QOpenGLTexture::UInt16);
-      texture->setData(0, QOpenGLTexture::RGBA, QOpenGLTexture::UInt16, texels.data(), &unpack);
+      const auto texels = pack<std::uint16_t>(image, 4, toUnorm16);
+      texture.setData(level, QOpenGLTexture::RGBA, QOpenGLTexture::UInt16, texels.data(), &unpack);
       break;
     }
     default: {
-      // Height, AO, roughness: one float channel keeps 16-bit and float files exact.
-      const auto texels = packFlipped<float>(image, 1, [](float v) { return v; });
-      texture->setFormat(QOpenGLTexture::R32F);
-      texture->allocateStorage(QOpenGLTexture::Red, QOpenGLTexture::Float32);
-      texture->setData(0, QOpenGLTexture::Red, QOpenGLTexture::Float32, texels.data(), &unpack);
+      const auto texels = pack<float>(image, 1, [](float v) { return v; });
+      texture.setData(level, QOpenGLTexture::Red, QOpenGLTexture::Float32, texels.data(), &unpack);
       break;
     }
   }
+}
+
+std::pair<QOpenGLTexture::PixelFormat, QOpenGLTexture::PixelType> transferFormat(MapSlot slot) {
+  switch (slot) {
+    case MapSlot::Color:
+      return {QOpenGLTexture::RGBA, QOpenGLTexture::UInt8};
+    case MapSlot::Normal:
+      return {QOpenGLTexture::RGBA, QOpenGLTexture::UInt16};
+    default:
+      return {QOpenGLTexture::Red, QOpenGLTexture::Float32};
+  }
+}
+
+std::unique_ptr<QOpenGLTexture> newMapTexture(int width, int height, int levels, MapSlot slot) {
+  auto texture = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
+  texture->setSize(width, height);
+  texture->setMipLevels(levels);
+  texture->setWrapMode(QOpenGLTexture::Repeat);
+  texture->setMinMagFilters(
+      levels > 1 ? QOpenGLTexture::LinearMipMapLinear : QOpenGLTexture::Linear,
+      QOpenGLTexture::Linear);
+  setSlotFormat(*texture, slot);
+  const auto [format, type] = transferFormat(slot);
+  texture->allocateStorage(format, type);
+  return texture;
+}
+
+}  // namespace
+
+std::unique_ptr<QOpenGLTexture> createMapTexture(const Image& image, MapSlot slot) {
+  auto texture = newMapTexture(image.width(), image.height(),
+                               core::mipLevelCount(image.width(), image.height()), slot);
+  uploadLevel(*texture, 0, image, slot);
   texture->generateMipMaps();
+  return texture;
+}
+
+std::unique_ptr<QOpenGLTexture> createDecodedTexture(const core::CompressedTexture& compressed,
+                                                     MapSlot slot) {
+  const int levels = int(compressed.levels.size());
+  if (levels == 0)
+    return nullptr;
+  auto texture =
+      newMapTexture(compressed.levels[0].width, compressed.levels[0].height, levels, slot);
+  // Mip levels beyond the file's would be incomplete; the texture ends where the file does.
+  texture->setMipMaxLevel(levels - 1);
+  for (int level = 0; level < levels; ++level) {
+    core::Result<Image> decoded = core::decodeAsMap(compressed, level);
+    if (!decoded)
+      return nullptr;
+    uploadLevel(*texture, level, decoded.value(), slot);
+  }
   return texture;
 }
 
@@ -124,9 +183,24 @@ QOpenGLTexture& TextureCache::texture(const core::Material& material, MapSlot sl
   Entry& entry = m_uploads[Key{image.get(), slot}];
   if (!entry.texture) {
     entry.image = image;
-    entry.texture = createMapTexture(*image, slot);
+    if (const auto& compressed = material.map(slot).compressed) {
+      if (m_nativeCompressed)
+        entry.texture = createCompressedTexture(*compressed);
+      entry.native = entry.texture != nullptr;
+      if (!entry.texture)
+        entry.texture = createDecodedTexture(*compressed, slot);
+    }
+    if (!entry.texture)
+      entry.texture = createMapTexture(*image, slot);
   }
   return *entry.texture;
+}
+
+std::optional<bool> TextureCache::uploadedNatively(const core::Material& material, MapSlot slot) {
+  if (!material.map(slot).compressed)
+    return std::nullopt;
+  texture(material, slot);
+  return m_uploads[Key{material.image(slot), slot}].native;
 }
 
 void TextureCache::releaseUnused(std::initializer_list<const core::Material*> materials) {
@@ -137,6 +211,15 @@ void TextureCache::releaseUnused(std::initializer_list<const core::Material*> ma
     }
     it = used ? std::next(it) : m_uploads.erase(it);
   }
+}
+
+void TextureCache::setNativeCompressedUploads(bool native) {
+  if (native == m_nativeCompressed)
+    return;
+  m_nativeCompressed = native;
+  // Compressed previews are uploaded again the other way at their next use.
+  for (auto it = m_uploads.begin(); it != m_uploads.end();)
+    it = it->second.texture && (it->second.native || native) ? m_uploads.erase(it) : std::next(it);
 }
 
 void TextureCache::release() {

@@ -12,6 +12,7 @@
 #include <initializer_list>
 #include <map>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace relief::renderer {
@@ -20,6 +21,13 @@ class TextureCache {
  public:
   // Needs a current context. Uploads on first use.
   QOpenGLTexture& texture(const core::Material& material, core::MapSlot slot);
+  // For a slot holding a compressed preview: whether its blocks went to the GPU as they are
+  // (false: the driver lacks the format and the decoded map was uploaded). Empty otherwise.
+  std::optional<bool> uploadedNatively(const core::Material& material, core::MapSlot slot);
+  // Off: compressed previews are always decoded by core and uploaded level by level (to compare
+  // the driver's decoding with ours, and for tests). On by default.
+  void setNativeCompressedUploads(bool native);
+  bool nativeCompressedUploads() const { return m_nativeCompressed; }
   // Frees the uploads that none of `materials` uses any more.
   void releaseUnused(std::initializer_list<const core::Material*> materials);
   void release();
@@ -29,14 +37,21 @@ class TextureCache {
   struct Entry {
     std::shared_ptr<const core::Image> image;  // keeps the key's address from being reused
     std::unique_ptr<QOpenGLTexture> texture;
+    bool native = false;  // compressed blocks uploaded as they are
   };
   std::map<Key, Entry> m_uploads;
   std::array<std::unique_ptr<QOpenGLTexture>, core::kMapSlotCount> m_neutral;
+  bool m_nativeCompressed = true;
 };
 
-// Creates the texture for one slot's image (rows flipped so UV (0,0) is the image's lower-left
-// corner, full mip chain). Colour maps use sRGB storage so the sampler decodes before filtering;
-// data maps keep their precision (16-bit normals, 32-bit float heights).
+// Creates the texture for one slot's image (rows top first, as files and compressed blocks store
+// them; the shaders flip V, see material_inputs.glsl; full mip chain). Colour maps use sRGB storage
+// so the sampler decodes before filtering; data maps keep their precision (16-bit normals, 32-bit
+// float heights).
 std::unique_ptr<QOpenGLTexture> createMapTexture(const core::Image& image, core::MapSlot slot);
+// The same for a compressed preview decoded by core: every level of the file decoded and uploaded
+// as the slot's format (so the mip levels are the compressed ones, not regenerated).
+std::unique_ptr<QOpenGLTexture> createDecodedTexture(const core::CompressedTexture& compressed,
+                                                     core::MapSlot slot);
 
 }  // namespace relief::renderer

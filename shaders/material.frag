@@ -82,9 +82,9 @@ void main() {
 
   SurfaceSample surface;
   surface.normal = sampleNormalMap(visible.uv, dx, dy);
-  surface.albedo = textureGrad(uColorMap, visible.uv, dx, dy).rgb;  // sRGB texture: linear
-  surface.occlusion = textureGrad(uOcclusionMap, visible.uv, dx, dy).r;
-  surface.roughness = textureGrad(uRoughnessMap, visible.uv, dx, dy).r;
+  surface.albedo = sampleMap(uColorMap, visible.uv, dx, dy).rgb;  // sRGB texture: linear
+  surface.occlusion = sampleMap(uOcclusionMap, visible.uv, dx, dy).r;
+  surface.roughness = sampleMap(uRoughnessMap, visible.uv, dx, dy).r;
 
 #if DEBUG_VIEW == VIEW_SHADING
   fragColor = vec4(linearToSrgb(shadeBlinnPhong(surface, L, V, shadow)), 1.0);

@@ -26,6 +26,7 @@ uniform bool uShadowLimit;      // Welsh's limit on the light ray (reference 003
 uniform float uTiling;          // repeats across the mesh UV range
 uniform float uNormalStrength;  // factor on the normal's tangent-plane tilt
 uniform bool uNormalYDown;      // DirectX normal maps store +Y pointing down
+uniform bool uNormalTwoChannel; // the normal texture holds X, Y only (BC5, EAC RG11, DXT5nm)
 uniform float uSpecular;        // highlight strength
 uniform float uShininess;       // Blinn-Phong exponent
 
@@ -35,3 +36,14 @@ uniform vec3 uLightDirection;   // world space, unit, toward the light
 uniform vec3 uLightColor;       // linear RGB times intensity
 uniform float uAmbient;         // fraction of the albedo lit without direction
 uniform vec2 uDepthDisplayRange;  // world distances mapped to black..white in the depth view
+
+// Map textures keep their rows top first, as image files and compressed blocks store them
+// (renderer/CompressedUpload.h), while texture V runs upward from the mesh's UV origin at the
+// image's bottom-left: every lookup flips V here, gradients with it.
+vec2 mapCoordinates(vec2 uv) {
+  return vec2(uv.x, 1.0 - uv.y);
+}
+
+vec4 sampleMap(sampler2D map, vec2 uv, vec2 dx, vec2 dy) {
+  return textureGrad(map, mapCoordinates(uv), vec2(dx.x, -dx.y), vec2(dy.x, -dy.y));
+}

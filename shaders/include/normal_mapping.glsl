@@ -11,5 +11,11 @@ vec3 decodeNormal(vec3 encoded) {
 }
 
 vec3 sampleNormalMap(vec2 uv, vec2 dx, vec2 dy) {
-  return decodeNormal(textureGrad(uNormalMap, uv, dx, dy).rgb);
+  vec3 encoded = sampleMap(uNormalMap, uv, dx, dy).rgb;
+  if (uNormalTwoChannel) {
+    // Two-channel formats store X and Y; Z = sqrt(1 - x^2 - y^2) (reference 003, eq. 2.1).
+    vec2 xy = encoded.xy * 2.0 - 1.0;
+    encoded.z = sqrt(max(0.0, 1.0 - dot(xy, xy))) * 0.5 + 0.5;
+  }
+  return decodeNormal(encoded);
 }

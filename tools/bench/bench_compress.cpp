@@ -1,0 +1,162 @@
+// bench-compress: encoding speed and quality per format and quality level, on the bricks sample
+// resized to 2048^2 (colour map and normal map), with libsquish's own CompressImage (cluster
+// fit, DXT1) on the same colour map as the reference row, measured in the same run. Then the
+// issue's target: BC4 and BC5 of 4096^2 maps in at most 1 s.
+//
+// Quality: PSNR (dB) for colour, mean angular error (degrees) for normals, PSNR for height.
+// Run: build/release/tools/bench-compress [--quick]   (--quick skips quality "best")
+#include "core/ImageIO.h"
+#include "core/compression/CompressionMetrics.h"
+#include "core/compression/Compressor.h"
+#include "core/generators/ImageFilters.h"
+
+#include <squish.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#ifndef RELIEF_SOURCE_DIR
+#error "RELIEF_SOURCE_DIR must point at the source tree (for the samples)"
+#endif
+
+namespace {
+
+using namespace relief;
+
+double secondsOf(const std::function<void()>& work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+core::Image load(const char* file, int size) {
+  auto image = core::loadImage(std::string(RELIEF_SOURCE_DIR "/samples/bricks/") + file);
+  if (!image) {
+    std::fprintf(stderr, "bench-compress: %s\n", image.error().c_str());
+    std::exit(1);
+  }
+  return core::resizeImage(image.value(), size, size);
+}
+
+void printRow(const char* map, const std::string& format, const char* quality, double seconds,
+              double megapixels, const std::string& metric, const char* note = "") {
+  std::printf("| %-6s | %-17s | %-6s | %8.2f | %8.2f | %-22s | %s\n", map, format.c_str(), quality,
+              seconds, megapixels / seconds, metric.c_str(), note);
+  std::fflush(stdout);
+}
+
+std::string metricText(const core::Image& map, core::MapSlot slot,
+                       const core::CompressedTexture& texture) {
+  const core::Image decoded = core::decodeAsMap(texture).value();
+  char text[64];
+  if (slot == core::MapSlot::Normal) {
+    std::snprintf(text, sizeof text, "mean %.3f deg",
+                  core::measureNormalError(map, decoded).meanDegrees);
+  } else {
+    std::snprintf(text, sizeof text, "PSNR %.2f dB", core::measureImageError(map, decoded).psnr);
+  }
+  return text;
+}
+
+void benchFormat(const char* label, const core::Image& map, core::MapSlot slot,
+                 core::TextureFormat format, core::CompressionQuality quality) {
+  core::Result<core::CompressedTexture> texture = core::Error{""};
+  const double seconds = secondsOf([&] {
+    texture = core::compressMap(map, slot, {format, quality, false});
+  });
+  if (!texture) {
+    std::fprintf(stderr, "bench-compress: %s\n", texture.error().c_str());
+    return;
+  }
+  printRow(label, std::string(core::textureFormatInfo(format).name),
+           core::compressionQualityName(quality).data(), seconds, double(map.pixelCount()) / 1e6,
+           metricText(map, slot, texture.value()));
+}
+
+// libsquish on its own: CompressImage over the whole RGBA8 image (OpenMP-threaded in Debian's
+// build), as an application calling the library would, with its default uniform weights and
+// with the luminance weights Relief passes for colour maps. Decoded with our decoder.
+void benchSquishReference(const core::Image& colour) {
+  const int width = colour.width(), height = colour.height();
+  std::vector<squish::u8> rgba(std::size_t(width) * std::size_t(height) * 4);
+  for (std::size_t p = 0; p < colour.pixelCount(); ++p) {
+    for (int c = 0; c < 4; ++c) {
+      const float v = c < 3 ? colour.data()[p * 3 + std::size_t(c)] : 1.0f;
+      rgba[p * 4 + std::size_t(c)] = squish::u8(std::lround(v * 255.0f));
+    }
+  }
+  float perceptual[3] = {0.2126f, 0.7152f, 0.0722f};
+  for (float* metric : {static_cast<float*>(nullptr), perceptual}) {
+    core::CompressedTexture texture;
+    texture.format = core::TextureFormat::Bc1;
+    texture.srgb = true;
+    texture.sourceChannels = 3;
+    texture.levels.push_back({width, height, {}});
+    texture.levels[0].data.resize(
+        core::compressedLevelSize(core::TextureFormat::Bc1, width, height));
+    const double seconds = secondsOf([&] {
+      squish::CompressImage(rgba.data(), width, height, texture.levels[0].data.data(),
+                            squish::kDxt1 | squish::kColourClusterFit, metric);
+    });
+    printRow("colour", "libsquish BC1 ref", "normal", seconds, double(colour.pixelCount()) / 1e6,
+             metricText(colour, core::MapSlot::Color, texture),
+             metric ? "squish::CompressImage, luminance weights (as Relief)"
+                    : "squish::CompressImage, uniform weights");
+  }
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  std::vector<core::CompressionQuality> qualities = {core::CompressionQuality::Fast,
+                                                     core::CompressionQuality::Normal};
+  if (!quick)
+    qualities.push_back(core::CompressionQuality::Best);
+
+  const core::Image colour = load("bricks_color.png", 2048);
+  const core::Image normal = load("bricks_normal.png", 2048);
+  std::printf("bench-compress: 2048x2048 bricks colour and normal maps, %u threads\n\n",
+              std::thread::hardware_concurrency());
+  std::printf(
+      "| map    | format            | qual.  |    s     |  MPix/s  | quality                | "
+      "note\n");
+  std::printf(
+      "|--------|-------------------|--------|----------|----------|------------------------|-----"
+      "\n");
+  benchSquishReference(colour);
+  for (core::TextureFormat format : core::formatsForSlot(core::MapSlot::Color)) {
+    for (core::CompressionQuality quality : qualities)
+      benchFormat("colour", colour, core::MapSlot::Color, format, quality);
+  }
+  for (core::TextureFormat format : core::formatsForSlot(core::MapSlot::Normal)) {
+    for (core::CompressionQuality quality : qualities)
+      benchFormat("normal", normal, core::MapSlot::Normal, format, quality);
+  }
+
+  std::printf("\nTarget: BC4 and BC5 of a 4096x4096 map in at most 1 s (quality normal)\n");
+  const core::Image height4k = load("bricks_height.png", 4096);
+  const core::Image normal4k = load("bricks_normal.png", 4096);
+  bool met = true;
+  for (const auto& [map, slot, format] :
+       {std::tuple{&height4k, core::MapSlot::Height, core::TextureFormat::Bc4},
+        std::tuple{&normal4k, core::MapSlot::Normal, core::TextureFormat::Bc5}}) {
+    core::Result<core::CompressedTexture> texture = core::Error{""};
+    const double seconds = secondsOf([&] {
+      texture = core::compressMap(*map, slot, {format, core::CompressionQuality::Normal, false});
+    });
+    met = met && seconds <= 1.0;
+    printRow(slot == core::MapSlot::Height ? "height" : "normal",
+             std::string(core::textureFormatInfo(format).name) + " 4096^2", "normal", seconds,
+             double(map->pixelCount()) / 1e6, metricText(*map, slot, texture.value()),
+             seconds <= 1.0 ? "<= 1 s: met" : "<= 1 s: MISSED");
+  }
+  return met ? 0 : 1;
+}
