@@ -1,5 +1,5 @@
 # Finds every third-party dependency once, with the workarounds PLATFORM.md documents.
-find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent Test)
+find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent Charts Test)
 find_package(OpenImageIO REQUIRED CONFIG)
 find_package(glm REQUIRED)
 find_package(assimp REQUIRED)

@@ -43,4 +43,35 @@ QImage makeThumbnail(const core::Image& image, int size) {
   return thumbnail;
 }
 
+QImage toDisplayImage(const core::Image& image, std::optional<int> channel) {
+  if (image.isEmpty())
+    return {};
+  const int channels = image.channels();
+  const bool alpha = channels == 4 && !channel;
+  QImage result(image.width(), image.height(),
+                alpha ? QImage::Format_RGBA8888 : QImage::Format_RGBX8888);
+  const auto to8 = [](float v) { return uchar(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+  for (int y = 0; y < image.height(); ++y) {
+    uchar* line = result.scanLine(y);
+    for (int x = 0; x < image.width(); ++x) {
+      const float* texel = image.pixel(x, y);
+      uchar* out = line + 4 * x;
+      if (channel) {
+        out[0] = out[1] = out[2] = to8(texel[std::clamp(*channel, 0, channels - 1)]);
+      } else if (channels >= 3) {
+        for (int c = 0; c < 3; ++c)
+          out[c] = to8(texel[c]);
+      } else if (channels == 2) {
+        out[0] = to8(texel[0]);
+        out[1] = to8(texel[1]);
+        out[2] = 0;
+      } else {
+        out[0] = out[1] = out[2] = to8(texel[0]);
+      }
+      out[3] = alpha ? to8(texel[3]) : 255;
+    }
+  }
+  return result;
+}
+
 }  // namespace relief::ui

@@ -8,6 +8,7 @@
 #include "core/export/PackageExport.h"
 #include "renderer/OffscreenRenderer.h"
 #include "ui/AppSettings.h"
+#include "ui/CompressPanel.h"
 #include "ui/DocumentFiles.h"
 #include "ui/ExportDialog.h"
 #include "ui/GeneratePanel.h"
@@ -106,6 +107,16 @@ MainWindow::MainWindow(QWidget* parent)
 
   m_frameTime->setToolTip(tr("CPU time of the last frame, including waiting for the GPU"));
   m_frameTime->setMinimumWidth(110);
+  m_compressedLabel = new QLabel(this);
+  m_compressedLabel->setToolTip(
+      tr("Compressed maps are uploaded as blocks (glCompressedTexImage2D) when the driver has "
+         "the format, otherwise decoded by Relief"));
+  m_compressedLabel->hide();
+  statusBar()->addPermanentWidget(m_compressedLabel);
+  connect(m_viewport, &ViewportWidget::compressedUploadChanged, this, [this](const QString& text) {
+    m_compressedLabel->setText(text);
+    m_compressedLabel->setVisible(!text.isEmpty());
+  });
   statusBar()->addPermanentWidget(m_rendererLabel);
   statusBar()->addPermanentWidget(m_frameTime);
   connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::showFrameTime);
@@ -155,6 +166,11 @@ void MainWindow::createDocks() {
   m_generate = new GeneratePanel(m_document);
   QDockWidget* generateDock =
       addDock(tr("Generate"), QStringLiteral("generateDock"), m_generate, Qt::RightDockWidgetArea);
+  m_compressPanel = new CompressPanel(m_document, m_viewport);
+  QDockWidget* compressDock = addDock(tr("Compress"), QStringLiteral("compressDock"),
+                                      m_compressPanel, Qt::RightDockWidgetArea);
+  connect(m_compressPanel, &CompressPanel::statusMessage, this,
+          [this](const QString& message) { statusBar()->showMessage(message, 8000); });
   auto* history = new QUndoView(m_document->undoStack());
   history->setEmptyLabel(tr("<opened>"));
   QDockWidget* historyDock =
@@ -171,6 +187,7 @@ void MainWindow::createDocks() {
   lightDock->raise();
   tabifyDockWidget(parametersDock, historyDock);
   tabifyDockWidget(parametersDock, generateDock);
+  tabifyDockWidget(parametersDock, compressDock);
   parametersDock->raise();
   resizeDocks({parametersDock, lightDock}, {380, 330}, Qt::Horizontal);
   connect(m_maps, &MapsPanel::loadRequested, this,
@@ -293,6 +310,29 @@ void MainWindow::createMenus() {
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     view->addAction(dock->toggleViewAction());
+
+  QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+  QAction* compress =
+      tools->addAction(tr("&Compress Maps"), QKeySequence(tr("Ctrl+Shift+K")), this, [this] {
+        if (auto* dock = findChild<QDockWidget*>(QStringLiteral("compressDock"))) {
+          dock->show();
+          dock->raise();
+        }
+        m_compressPanel->compress();
+      });
+  compress->setToolTip(tr("Compress the maps in the formats chosen in the Compress panel"));
+  tools->addAction(tr("Compare &All Formats…"), m_compressPanel, &CompressPanel::openCompareAll);
+  tools->addAction(tr("Compare Compressed Map in &2D…"), m_compressPanel,
+                   &CompressPanel::openCompare);
+  QMenu* compressedView = tools->addMenu(tr("Viewport Shows"));
+  const QString viewNames[] = {tr("&Original Maps"), tr("&Compressed Maps"),
+                               tr("&Wipe: Original | Compressed")};
+  for (int i = 0; i < 3; ++i) {
+    QAction* action = compressedView->addAction(viewNames[i]);
+    action->setShortcut(QKeySequence(QStringLiteral("Alt+%1").arg(i + 1)));
+    connect(action, &QAction::triggered, this,
+            [this, i] { m_compressPanel->viewBox()->setCurrentIndex(i); });
+  }
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+/")), this,

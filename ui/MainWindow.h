@@ -19,6 +19,7 @@ class QProgressBar;
 
 namespace relief::ui {
 
+class CompressPanel;
 class DocumentFiles;
 class GeneratePanel;
 class LightPanel;
@@ -40,6 +41,9 @@ class MainWindow : public QMainWindow {
   ParameterPanel* parameterPanel() const { return m_parameters; }
   LightPanel* lightPanel() const { return m_light; }
   GeneratePanel* generatePanel() const { return m_generate; }
+  CompressPanel* compressPanel() const { return m_compressPanel; }
+  // How the compressed previews reach the GPU ("... uploaded natively"), shown in the status bar.
+  QLabel* compressedUploadLabel() const { return m_compressedLabel; }
   QComboBox* debugViewBox() const { return m_debugView; }
   QComboBox* meshBox() const { return m_meshBox; }
   QAction* compareAction() const { return m_compare; }
@@ -99,6 +103,8 @@ class MainWindow : public QMainWindow {
   MapsPanel* m_maps = nullptr;
   LightPanel* m_light = nullptr;
   GeneratePanel* m_generate = nullptr;
+  CompressPanel* m_compressPanel = nullptr;
+  QLabel* m_compressedLabel = nullptr;
   QComboBox* m_debugView = nullptr;
   QComboBox* m_meshBox = nullptr;
   QAction* m_compare = nullptr;

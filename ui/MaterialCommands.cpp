@@ -61,6 +61,27 @@ void SetTechniqueCommand::redo() {
   m_document->applyTechnique(m_newTechnique);
 }
 
+SetCompressionCommand::SetCompressionCommand(MaterialDocument* document, core::MapSlot slot,
+                                             core::MapCompression oldCompression,
+                                             core::MapCompression newCompression)
+    : m_document(document),
+      m_slot(slot),
+      m_old(std::move(oldCompression)),
+      m_new(std::move(newCompression)) {
+  const QString label = toQString(core::mapSlotLabel(slot));
+  setText(m_new.format.empty() ? QObject::tr("%1 map: no compression").arg(label)
+                               : QObject::tr("%1 map: compress as %2 (%3)")
+                                     .arg(label, QString::fromStdString(m_new.format),
+                                          QString::fromStdString(m_new.quality)));
+}
+
+void SetCompressionCommand::undo() {
+  m_document->applyCompression(m_slot, m_old);
+}
+void SetCompressionCommand::redo() {
+  m_document->applyCompression(m_slot, m_new);
+}
+
 SetMapCommand::SetMapCommand(MaterialDocument* document, core::MapSlot slot,
                              core::MaterialMap oldMap, core::MaterialMap newMap)
     : m_document(document), m_slot(slot), m_oldMap(std::move(oldMap)), m_newMap(std::move(newMap)) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/Material.h"
+#include "core/MaterialPreset.h"
 
 #include <QUndoCommand>
 
@@ -51,6 +52,20 @@ class SetTechniqueCommand : public QUndoCommand {
   MaterialDocument* m_document;
   core::Technique m_oldTechnique;
   core::Technique m_newTechnique;
+};
+
+class SetCompressionCommand : public QUndoCommand {
+ public:
+  SetCompressionCommand(MaterialDocument* document, core::MapSlot slot,
+                        core::MapCompression oldCompression, core::MapCompression newCompression);
+  void undo() override;
+  void redo() override;
+
+ private:
+  MaterialDocument* m_document;
+  core::MapSlot m_slot;
+  core::MapCompression m_old;
+  core::MapCompression m_new;
 };
 
 class SetMapCommand : public QUndoCommand {

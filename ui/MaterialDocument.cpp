@@ -70,6 +70,19 @@ void MaterialDocument::resetParameters() {
       new SetAllParametersCommand(this, m_material.parameters(), core::defaultParameterValues()));
 }
 
+void MaterialDocument::setCompression(core::MapSlot slot, const core::MapCompression& compression) {
+  if (compression == m_compression[std::size_t(slot)])
+    return;
+  m_undoStack.push(
+      new SetCompressionCommand(this, slot, m_compression[std::size_t(slot)], compression));
+}
+
+void MaterialDocument::applyCompression(core::MapSlot slot,
+                                        const core::MapCompression& compression) {
+  m_compression[std::size_t(slot)] = compression;
+  Q_EMIT compressionChanged(slot);
+}
+
 void MaterialDocument::setTechnique(core::Technique technique) {
   if (technique == m_material.technique())
     return;

@@ -49,6 +49,11 @@ class MaterialDocument : public QObject {
   void setMap(core::MapSlot slot, std::shared_ptr<const core::Image> image,
               const QString& sourcePath);
   void clearMap(core::MapSlot slot);
+  // The compression chosen for a slot (saved with the preset); one undo step per change.
+  const core::MapCompression& compression(core::MapSlot slot) const {
+    return m_compression[std::size_t(slot)];
+  }
+  void setCompression(core::MapSlot slot, const core::MapCompression& compression);
   // Another material's technique and parameters (not its maps), as one undo step.
   void applyLook(const core::Material& from, const QString& label);
   // A generated map and the parameter changes that go with it, as one undo step.
@@ -61,12 +66,14 @@ class MaterialDocument : public QObject {
   void applyParameters(const core::ParameterValues& values);
   void applyTechnique(core::Technique technique);
   void applyMap(core::MapSlot slot, const core::MaterialMap& map);
+  void applyCompression(core::MapSlot slot, const core::MapCompression& compression);
 
  Q_SIGNALS:
   void parameterChanged(relief::core::ParamId id);
   void techniqueChanged();
   void mapChanged(relief::core::MapSlot slot);
   void materialReset();
+  void compressionChanged(relief::core::MapSlot slot);
   void fileSaved();  // saved to filePath(); maps may now name the files the save wrote
 
  private:

@@ -5,6 +5,7 @@
 #include "renderer/ErrorView.h"
 #include "renderer/HeatmapLegend.h"
 #include "renderer/MaterialRenderer.h"
+#include "ui/ImageThumbnail.h"
 #include "ui/MaterialDocument.h"
 #include "ui/QtText.h"
 
@@ -24,18 +25,6 @@ namespace {
 
 // The error view's colour scale: errors of a quarter texel and more are red.
 constexpr double kErrorDisplayTexels = 0.25;
-
-QImage toQImage(const core::Image& rgba) {
-  QImage image(rgba.width(), rgba.height(), QImage::Format_RGBA8888);
-  for (int y = 0; y < rgba.height(); ++y) {
-    uchar* line = image.scanLine(y);
-    const float* source = rgba.pixel(0, y);
-    for (int i = 0; i < rgba.width() * 4; ++i) {
-      line[i] = uchar(std::lround(std::clamp(source[i], 0.0f, 1.0f) * 255.0f));
-    }
-  }
-  return image;
-}
 
 }  // namespace
 
@@ -59,7 +48,7 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
     if (m_errorWatcher.isCanceled() || m_errorCancel->load())
       return;
     m_errorMap = m_errorWatcher.result();
-    m_errorImage = toQImage(core::colorizeErrorMap(*m_errorMap, kErrorDisplayTexels));
+    m_errorImage = toDisplayImage(core::colorizeErrorMap(*m_errorMap, kErrorDisplayTexels));
     Q_EMIT errorViewProgress(0, 0);
     Q_EMIT errorViewFinished(m_errorMap->mean, m_errorMap->p95, m_errorMap->maximum);
     update();
@@ -142,6 +131,33 @@ const core::Material* ViewportWidget::comparisonMaterial() const {
   return m_frame.split ? &m_frame.split->material : nullptr;
 }
 
+void ViewportWidget::setCompressedPreviews(std::vector<CompressedPreview> previews) {
+  m_previews = std::move(previews);
+  changed();
+}
+
+void ViewportWidget::setCompressedView(CompressedView view) {
+  m_compressedView = view;
+  changed();
+}
+
+bool ViewportWidget::showsCompressed() const {
+  return m_compressedView != CompressedView::Original && !m_previews.empty();
+}
+
+bool ViewportWidget::hasDivider() const {
+  return showsCompressed() ? m_compressedView == CompressedView::Wipe : m_frame.split.has_value();
+}
+
+core::Material ViewportWidget::compressedMaterial() const {
+  core::Material material = m_document->material();
+  for (const CompressedPreview& preview : m_previews) {
+    if (material.map(preview.slot).image == preview.source)
+      material.setCompressedMap(preview.slot, preview.texture, preview.decoded);
+  }
+  return material;
+}
+
 void ViewportWidget::setDividerFraction(float fraction) {
   m_dividerFraction = std::clamp(fraction, 0.0f, 1.0f);
   if (m_frame.split)
@@ -201,20 +217,40 @@ void ViewportWidget::paintGL() {
     m_renderer->setMesh(m_mesh);
     m_meshDirty = false;
   }
-  m_renderer->setMaterial(m_document->material());
+  renderer::FrameSettings frame = m_frame;
+  std::optional<core::Material> compressed;
+  if (showsCompressed()) {
+    // The compressed view replaces a held A/B comparison while it is on.
+    compressed = compressedMaterial();
+    if (m_compressedView == CompressedView::Wipe) {
+      m_renderer->setMaterial(m_document->material());
+      frame.split = renderer::SplitComparison{*compressed, m_dividerFraction};
+    } else {
+      m_renderer->setMaterial(*compressed);
+      frame.split.reset();
+    }
+  } else {
+    m_renderer->setMaterial(m_document->material());
+  }
   const qreal ratio = devicePixelRatioF();
   const int pixelWidth = int(std::lround(width() * ratio));
   const int pixelHeight = int(std::lround(height() * ratio));
   if (m_frame.debugView == core::DebugView::Error && m_errorStale) {
     startErrorView(pixelWidth, pixelHeight);
   }
-  renderer::FrameSettings frame = m_frame;
   if (frame.debugView == core::DebugView::Error)
     frame.debugView = core::DebugView::Shading;
   if (core::Status status =
           m_renderer->render(frame, pixelWidth, pixelHeight, defaultFramebufferObject());
       !status) {
     Q_EMIT renderError(QString::fromStdString(status.error()));
+  }
+  const QString summary =
+      compressed ? QString::fromStdString(m_renderer->compressedUploadSummary(*compressed))
+                 : QString();
+  if (summary != m_uploadSummary) {
+    m_uploadSummary = summary;
+    Q_EMIT compressedUploadChanged(summary);
   }
   // Waiting for the GPU makes the status-bar number the real frame cost. The viewport only
   // draws on demand, so the stall never costs an animation frame.
@@ -264,7 +300,7 @@ void ViewportWidget::paintOverlays() {
   const bool errorView = m_frame.debugView == core::DebugView::Error;
   const core::Material& material = m_document->material();
   const auto legend = renderer::legendFor(m_frame.debugView, material, kErrorDisplayTexels);
-  if (!m_frame.split && !legend && !errorView)
+  if (!hasDivider() && !legend && !errorView)
     return;  // nothing drawn over the frame
   QPainter painter(this);
   if (errorView) {
@@ -286,18 +322,28 @@ void ViewportWidget::paintOverlays() {
   }
   if (legend)
     renderer::drawHeatmapLegend(painter, rect(), *legend);
-  if (m_frame.split) {
+  if (hasDivider()) {
     const int x = dividerX();
     painter.setPen(QPen(QColor(255, 255, 255, 200), 2));
     painter.drawLine(x, 0, x, height());
-    const auto label = [](const core::Material& m) {
-      return toQString(core::techniqueName(m.technique()));
-    };
+    QString left, right;
+    if (showsCompressed()) {
+      QStringList formats;
+      for (const CompressedPreview& preview : m_previews) {
+        formats << toQString(core::textureFormatInfo(preview.texture->format).name).toUpper();
+      }
+      left = tr("Original");
+      right = tr("Compressed: %1").arg(formats.join(QStringLiteral(", ")));
+    } else {
+      const auto label = [](const core::Material& m) {
+        return toQString(core::techniqueName(m.technique()));
+      };
+      left = tr("A (live): %1").arg(label(material));
+      right = tr("B (held): %1").arg(label(m_frame.split->material));
+    }
     painter.setPen(Qt::white);
-    painter.drawText(QRect(8, 8, std::max(x - 16, 0), 20), Qt::AlignLeft,
-                     tr("A (live): %1").arg(label(material)));
-    painter.drawText(QRect(x + 8, 8, std::max(width() - x - 16, 0), 20), Qt::AlignRight,
-                     tr("B (held): %1").arg(label(m_frame.split->material)));
+    painter.drawText(QRect(8, 8, std::max(x - 16, 0), 20), Qt::AlignLeft, left);
+    painter.drawText(QRect(x + 8, 8, std::max(width() - x - 16, 0), 20), Qt::AlignRight, right);
   }
 }
 
@@ -305,7 +351,7 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   m_lastPos = event->position().toPoint();
   const Qt::KeyboardModifiers modifiers = event->modifiers();
   if (event->button() == Qt::LeftButton) {
-    if (m_frame.split && std::abs(m_lastPos.x() - dividerX()) <= kDividerGrabPixels) {
+    if (hasDivider() && std::abs(m_lastPos.x() - dividerX()) <= kDividerGrabPixels) {
       m_drag = DragMode::Divider;
     } else if (modifiers & Qt::ControlModifier) {
       m_drag = DragMode::Light;
@@ -324,7 +370,7 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   const QPoint pos = event->position().toPoint();
-  if (m_drag == DragMode::None && m_frame.split) {
+  if (m_drag == DragMode::None && hasDivider()) {
     const bool nearDivider = std::abs(pos.x() - dividerX()) <= kDividerGrabPixels;
     setCursor(nearDivider ? Qt::SplitHCursor : Qt::ArrowCursor);
   }

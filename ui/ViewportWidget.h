@@ -7,6 +7,7 @@
 #include "core/DebugView.h"
 #include "core/Mesh.h"
 #include "core/UvErrorMap.h"
+#include "core/compression/Compressor.h"
 #include "renderer/FrameSettings.h"
 
 #include <QFutureWatcher>
@@ -17,6 +18,7 @@
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace relief::renderer {
 class MaterialRenderer;
@@ -52,6 +54,24 @@ class ViewportWidget : public QOpenGLWidget {
   float dividerFraction() const { return m_dividerFraction; }
   void setDividerFraction(float fraction);
 
+  // Compression previews: per slot, a compressed texture of the map the document held when it
+  // was made (a slot whose map changed since is shown uncompressed). The view shows the
+  // original, the compressed maps, or a wipe with the original left of the divider.
+  struct CompressedPreview {
+    core::MapSlot slot;
+    std::shared_ptr<const core::Image> source;  // the document's map it was made from
+    std::shared_ptr<const core::CompressedTexture> texture;
+    std::shared_ptr<const core::Image> decoded;
+  };
+  enum class CompressedView { Original, Compressed, Wipe };
+  void setCompressedPreviews(std::vector<CompressedPreview> previews);
+  void setCompressedView(CompressedView view);
+  CompressedView compressedView() const { return m_compressedView; }
+  // The document's material with every current preview substituted.
+  core::Material compressedMaterial() const;
+  // How the previews reach the GPU (native or decoded), as of the last frame.
+  const QString& compressedUploadSummary() const { return m_uploadSummary; }
+
   // The frame as the renderer gets it (for offscreen renders of exactly this view).
   renderer::FrameSettings frameSettings() const { return m_frame; }
   // The error view's last numbers, when it has finished.
@@ -70,6 +90,7 @@ class ViewportWidget : public QOpenGLWidget {
   void lightChanged();
   void errorViewProgress(int done, int total);  // total 0: finished or cancelled
   void errorViewFinished(double meanTexels, double p95Texels, double maxTexels);
+  void compressedUploadChanged(const QString& summary);
 
  protected:
   void initializeGL() override;
@@ -88,8 +109,14 @@ class ViewportWidget : public QOpenGLWidget {
   void paintOverlays();
   int dividerX() const;
 
+  bool showsCompressed() const;
+  bool hasDivider() const;
+
   MaterialDocument* m_document;
   std::unique_ptr<renderer::MaterialRenderer> m_renderer;
+  std::vector<CompressedPreview> m_previews;
+  CompressedView m_compressedView = CompressedView::Original;
+  QString m_uploadSummary;
   renderer::FrameSettings m_frame;
   float m_dividerFraction = 0.5f;
   core::Mesh m_mesh;

@@ -7,6 +7,7 @@
 #include "core/compression/BlockCodecs.h"
 #include "core/compression/CompressionMetrics.h"
 #include "core/compression/Compressor.h"
+#include "core/compression/DifferenceImage.h"
 #include "core/compression/MipChain.h"
 #include "core/compression/TextureFormat.h"
 #include "support/TestPaths.h"
@@ -402,6 +403,30 @@ TEST(CompressionMetricsTest, HeightErrorIsTheParallaxShiftInTexels) {
       measureHeightError(constantImage(1000, 4, {0.5f}), constantImage(1000, 4, {0.51f}), 0.05);
   EXPECT_NEAR(error.meanTexels, 0.5, 1e-4);
   EXPECT_NEAR(error.maxTexels, 0.5, 1e-4);
+}
+
+TEST(DifferenceImageTest, GainAndThresholdFollowTheDefinitions) {
+  const Image a = constantImage(4, 2, {0.5f, 0.2f, 0.9f});
+  Image b = constantImage(4, 2, {0.51f, 0.2f, 0.8f});
+  b.at(3, 1, 1) = 0.3f;  // one texel differs by 0.1 in green
+  // |a - b| x 10: red 0.1 everywhere, blue 1.0 (clamped from 0.1 x 10 = 1.0).
+  const Image gained = amplifiedDifference(a, b, 10.0);
+  ASSERT_EQ(gained.channels(), 3);
+  EXPECT_NEAR(gained.at(0, 0, 0), 0.1f, 1e-5f);
+  EXPECT_NEAR(gained.at(0, 0, 1), 0.0f, 1e-6f);
+  EXPECT_NEAR(gained.at(3, 1, 1), 1.0f, 1e-5f);
+  EXPECT_NEAR(gained.at(0, 0, 2), 1.0f, 1e-5f);
+  // Green alone at x100: only the changed texel lights up.
+  const Image green = amplifiedDifference(a, b, 100.0, 1);
+  ASSERT_EQ(green.channels(), 1);
+  EXPECT_EQ(green.at(0, 0, 0), 0.0f);
+  EXPECT_EQ(green.at(3, 1, 0), 1.0f);
+  // Thresholded at 8/255 (0.031): red's 0.01 is below, blue's 0.1 above; green alone only at
+  // the changed texel.
+  EXPECT_EQ(thresholdedDifference(a, b, 8.0 / 255.0, 0).at(1, 1, 0), 0.0f);
+  EXPECT_EQ(thresholdedDifference(a, b, 8.0 / 255.0).at(1, 1, 0), 1.0f);
+  EXPECT_EQ(thresholdedDifference(a, b, 8.0 / 255.0, 1).at(1, 1, 0), 0.0f);
+  EXPECT_EQ(thresholdedDifference(a, b, 8.0 / 255.0, 1).at(3, 1, 0), 1.0f);
 }
 
 // --- Quality floors on the samples -----------------------------------------------------------
