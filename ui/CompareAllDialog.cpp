@@ -64,6 +64,7 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
 
   auto* chart = new QChart;
   chart->legend()->hide();
+  chart->setTheme(QChart::ChartThemeDark);
   m_chartView = new QChartView(chart, this);
   m_chartView->setRenderHint(QPainter::Antialiasing);
   m_chartView->setMinimumHeight(280);
@@ -199,6 +200,8 @@ void CompareAllDialog::addRow(const CompressionOutcome& outcome) {
       row, SecondsColumn,
       sortableNumber(report.encodeSeconds, QString::number(report.encodeSeconds, 'f', 2)));
   m_table->setSortingEnabled(true);
+  if (m_outcomes.size() == 1)
+    m_table->sortByColumn(BitsColumn, Qt::AscendingOrder);
 }
 
 void CompareAllDialog::updateChart() {
@@ -232,6 +235,8 @@ void CompareAllDialog::updateChart() {
   auto* x = new QValueAxis;
   x->setTitleText(tr("bits per texel"));
   x->setRange(0.0, 9.0);
+  x->setTickCount(10);
+  x->setLabelFormat(QStringLiteral("%d"));
   auto* y = new QValueAxis;
   y->setTitleText(normal ? tr("mean angular error (°)") : tr("PSNR (dB)"));
   if (high > low)

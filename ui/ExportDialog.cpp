@@ -43,6 +43,7 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
       m_kind(new QComboBox),
       m_folder(new QLineEdit),
       m_mapFormat(new QComboBox),
+      m_textures(new QComboBox),
       m_explanation(new QLabel) {
   setWindowTitle(tr("Export"));
   setObjectName(QStringLiteral("exportDialog"));
@@ -55,6 +56,13 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
   m_mapFormat->setToolTip(
       tr("How the normal, height, AO and roughness maps are written; the "
          "colour map is always 8-bit sRGB PNG."));
+  m_textures->addItem(tr("KTX2"), int(core::PackageTextures::Ktx2));
+  m_textures->addItem(tr("DDS for BC formats, KTX2 for the rest"),
+                      int(core::PackageTextures::DdsWherePossible));
+  m_textures->addItem(tr("None"), int(core::PackageTextures::None));
+  m_textures->setToolTip(
+      tr("Maps with a format chosen in the Compress panel are also written "
+         "compressed, with their quality and mipmap choice"));
   const std::string stem = core::exportStem(m_preset.material);
   // Exports go where exports went before, not beside the preset (which may be a bundled one).
   m_folder->setText(settings::lastFolder(QStringLiteral("export"), false) + QLatin1Char('/') +
@@ -80,6 +88,7 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
   form->addRow(tr("Export as"), m_kind);
   form->addRow(tr("Into folder"), folderRow);
   form->addRow(tr("Data maps"), m_mapFormat);
+  form->addRow(tr("Compressed textures"), m_textures);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel);
   QPushButton* exportButton = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
   exportButton->setDefault(true);
@@ -101,6 +110,7 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
 void ExportDialog::updateForKind() {
   const int kind = m_kind->currentIndex();
   m_mapFormat->setEnabled(kind == Package);
+  m_textures->setEnabled(kind == Package);
   static const char* explanations[] = {
       QT_TR_NOOP("The maps in the chosen format and a .relief preset pointing at them: a folder "
                  "to copy into another project or hand to a colleague."),
@@ -124,6 +134,7 @@ bool ExportDialog::runExport() {
   const core::PackageMapFormat formats[] = {
       core::PackageMapFormat::Png16, core::PackageMapFormat::Png8, core::PackageMapFormat::Exr};
   const core::PackageMapFormat mapFormat = formats[m_mapFormat->currentIndex()];
+  const auto textures = core::PackageTextures(m_textures->currentData().toInt());
   // Encoding large maps takes seconds: off the GUI thread, with a busy indicator.
   QFutureWatcher<Outcome> watcher;
   QProgressDialog progress(tr("Exporting…"), QString(), 0, 0, this);
@@ -131,12 +142,12 @@ bool ExportDialog::runExport() {
   progress.setMinimumDuration(300);
   QEventLoop loop;
   connect(&watcher, &QFutureWatcher<Outcome>::finished, &loop, &QEventLoop::quit);
-  watcher.setFuture(
-      QtConcurrent::run([preset = m_preset, mesh = m_mesh, folder, kind, mapFormat]() -> Outcome {
+  watcher.setFuture(QtConcurrent::run(
+      [preset = m_preset, mesh = m_mesh, folder, kind, mapFormat, textures]() -> Outcome {
         const std::string target = folder.toStdString();
         Outcome outcome;
         if (kind == Package) {
-          auto written = core::exportPackage(preset, target, {mapFormat});
+          auto written = core::exportPackage(preset, target, {mapFormat, textures});
           if (!written)
             outcome.error = QString::fromStdString(written.error());
           else

@@ -23,6 +23,7 @@ class ExportDialog : public QDialog {
   QComboBox* kindBox() const { return m_kind; }
   QLineEdit* folderEdit() const { return m_folder; }
   QComboBox* mapFormatBox() const { return m_mapFormat; }
+  QComboBox* texturesBox() const { return m_textures; }
   // What the last export wrote (its main file) and any notes; empty before or after a failure.
   const QString& writtenPath() const { return m_writtenPath; }
 
@@ -37,6 +38,7 @@ class ExportDialog : public QDialog {
   QComboBox* m_kind;
   QLineEdit* m_folder;
   QComboBox* m_mapFormat;
+  QComboBox* m_textures;
   QLabel* m_explanation;
   QString m_writtenPath;
 };

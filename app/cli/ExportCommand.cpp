@@ -48,6 +48,11 @@ int runExport(const QStringList& arguments) {
          QStringLiteral("package: data maps as png (8-bit, dithered), png16 or exr (default "
                         "png16); the colour map stays 8-bit sRGB PNG."),
          QStringLiteral("format"), QStringLiteral("png16"));
+  option(QStringLiteral("textures"),
+         QStringLiteral("package: maps with a compression choice in the preset are also written "
+                        "compressed, as ktx2 (default), dds (BC formats; KTX2 for the rest) or "
+                        "none."),
+         QStringLiteral("container"), QStringLiteral("ktx2"));
   parser.addOption(QCommandLineOption(
       QStringLiteral("strict"),
       QStringLiteral("Fail when the preset has problems (a missing map, a clamped value) "
@@ -77,6 +82,17 @@ int runExport(const QStringList& arguments) {
     return kExitUsage;
   }
 
+  const QString texturesName = parser.value(QStringLiteral("textures"));
+  const core::PackageTextures textures =
+      texturesName == QStringLiteral("dds")    ? core::PackageTextures::DdsWherePossible
+      : texturesName == QStringLiteral("none") ? core::PackageTextures::None
+                                               : core::PackageTextures::Ktx2;
+  if (texturesName != QStringLiteral("ktx2") && texturesName != QStringLiteral("dds") &&
+      texturesName != QStringLiteral("none")) {
+    printError(QStringLiteral("--textures %1: expected ktx2, dds or none").arg(texturesName));
+    return kExitUsage;
+  }
+
   const QString presetPath = parser.value(QStringLiteral("preset"));
   core::Result<core::LoadedPreset> loaded = core::loadPreset(presetPath.toStdString());
   if (!loaded) {
@@ -94,7 +110,7 @@ int runExport(const QStringList& arguments) {
   const std::string folder = parser.value(QStringLiteral("out")).toStdString();
 
   if (kind == QStringLiteral("package")) {
-    core::Result<std::string> written = core::exportPackage(preset, folder, {*mapFormat});
+    core::Result<std::string> written = core::exportPackage(preset, folder, {*mapFormat, textures});
     if (!written) {
       printError(QString::fromStdString(written.error()));
       return kExitFailure;

@@ -2,6 +2,8 @@
 #include "core/export/PackageExport.h"
 
 #include "core/ImageIO.h"
+#include "core/compression/Compressor.h"
+#include "core/compression/TextureFile.h"
 
 #include <algorithm>
 #include <cctype>
@@ -16,6 +18,37 @@ std::string exportStem(const Material& material) {
       [](unsigned char c) { return !(std::isalnum(c) || c == '-' || c == '_'); }, '_');
   return stem;
 }
+
+namespace {
+
+// The compressed copy of one map, when the preset has a compression choice for it.
+Status writeCompressed(const Preset& preset, MapSlot slot, const std::string& folder,
+                       const std::string& stem, const PackageOptions& options) {
+  const MapCompression& choice = preset.compression[std::size_t(slot)];
+  const std::optional<TextureFormat> format = findTextureFormat(choice.format);
+  if (options.textures == PackageTextures::None || !format)
+    return {};
+  if (!formatSuitsSlot(*format, slot)) {
+    return makeError(std::string(mapSlotLabel(slot)) +
+                     " map: " + std::string(textureFormatInfo(*format).label) + " cannot hold it");
+  }
+  CompressionSettings settings;
+  settings.format = *format;
+  settings.quality = findCompressionQuality(choice.quality).value_or(CompressionQuality::Normal);
+  settings.mipmaps = choice.mipmaps;
+  Result<CompressedTexture> texture = compressMap(*preset.material.map(slot).image, slot, settings);
+  if (!texture)
+    return makeError(std::string(mapSlotLabel(slot)) + " map: " + texture.error());
+  const bool dds = options.textures == PackageTextures::DdsWherePossible &&
+                   textureFormatInfo(*format).fourCC != 0;
+  const std::string path =
+      (std::filesystem::path(folder) /
+       (stem + "_" + std::string(mapSlotName(slot)) + (dds ? ".dds" : ".ktx2")))
+          .string();
+  return saveCompressedTexture(texture.value(), path);
+}
+
+}  // namespace
 
 Result<std::string> exportPackage(const Preset& preset, const std::string& folder,
                                   const PackageOptions& options) {
@@ -51,6 +84,8 @@ Result<std::string> exportPackage(const Preset& preset, const std::string& folde
       return makeError(saved.error());
     }
     packaged.material.setMap(slot, map.image, std::filesystem::absolute(path).string());
+    if (Status compressed = writeCompressed(preset, slot, folder, stem, options); !compressed)
+      return makeError(compressed.error());
   }
   // A mesh file travels with the package; primitives are names.
   if (std::filesystem::path(packaged.view.mesh).has_extension()) {

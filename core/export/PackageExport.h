@@ -15,12 +15,18 @@ enum class PackageMapFormat {
   Exr,    // float EXR (the colour map stays 8-bit sRGB PNG)
 };
 
+// Maps the preset says to compress (its `compression` choices) are also written compressed:
+// as KTX2, or as DDS for the BC formats (KTX2 for the rest, which DDS readers do not know).
+enum class PackageTextures { None, Ktx2, DdsWherePossible };
+
 struct PackageOptions {
   PackageMapFormat dataMaps = PackageMapFormat::Png16;  // normal, height, AO, roughness
+  PackageTextures textures = PackageTextures::Ktx2;
 };
 
-// Writes <folder>/<name>_<slot>.<ext> and <folder>/<name>.relief (creating the folder).
-// Returns the preset's path.
+// Writes <folder>/<name>_<slot>.<ext> and <folder>/<name>.relief (creating the folder), plus
+// <name>_<slot>.ktx2 or .dds for each map with a compression choice (the preset keeps pointing
+// at the lossless files). Returns the preset's path.
 Result<std::string> exportPackage(const Preset& preset, const std::string& folder,
                                   const PackageOptions& options = {});
 

@@ -491,6 +491,12 @@ TEST(Cli, ExportRefusesBadRequests) {
       runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(samplePreset("tiles")),
               QStringLiteral("--to"), QStringLiteral("fbx"), QStringLiteral("--out"), q(folder)});
   EXPECT_EQ(badKind.exitCode, 2);
+  CliRun badTextures =
+      runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(samplePreset("tiles")),
+              QStringLiteral("--to"), QStringLiteral("package"), QStringLiteral("--textures"),
+              QStringLiteral("pvr"), QStringLiteral("--out"), q(folder)});
+  EXPECT_EQ(badTextures.exitCode, 2);
+  EXPECT_NE(badTextures.err.find("--textures pvr"), std::string::npos) << badTextures.err;
   const std::string missing = folder + "/absent.relief";
   CliRun noPreset =
       runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(missing),

@@ -5,6 +5,7 @@
 #include "core/ImageIO.h"
 #include "core/MaterialPreset.h"
 #include "core/MeshPrimitives.h"
+#include "core/compression/TextureFile.h"
 #include "core/export/EngineConversion.h"
 #include "core/export/GltfExport.h"
 #include "core/export/GodotExport.h"
@@ -134,6 +135,39 @@ TEST(PackageExport, ReloadsAsTheSameMaterial) {
     EXPECT_EQ(std::filesystem::path(heightFile).extension(),
               format == PackageMapFormat::Exr ? ".exr" : ".png");
   }
+}
+
+TEST(PackageExport, MapsWithACompressionChoiceAreAlsoWrittenCompressed) {
+  Preset preset = syntheticPreset();
+  preset.compression[std::size_t(MapSlot::Color)] = {"astc6x6", "fast", true};
+  preset.compression[std::size_t(MapSlot::Normal)] = {"bc5", "normal", true};
+  preset.compression[std::size_t(MapSlot::Height)] = {"bc4", "normal", false};
+  for (PackageTextures textures : {PackageTextures::Ktx2, PackageTextures::DdsWherePossible}) {
+    const std::string folder = freshFolder("compressed" + std::to_string(int(textures)));
+    ASSERT_TRUE(exportPackage(preset, folder, {PackageMapFormat::Png16, textures}).ok());
+    const bool dds = textures == PackageTextures::DdsWherePossible;
+    // ASTC has no DDS code, so it is KTX2 either way; BC goes to DDS when asked.
+    const auto path = [&](const char* slot, bool bc) {
+      return folder + "/test_brick_" + slot + (dds && bc ? ".dds" : ".ktx2");
+    };
+    Result<CompressedTexture> colour = loadCompressedTexture(path("color", false));
+    Result<CompressedTexture> normal = loadCompressedTexture(path("normal", true));
+    Result<CompressedTexture> height = loadCompressedTexture(path("height", true));
+    ASSERT_TRUE(colour.ok()) << colour.error();
+    ASSERT_TRUE(normal.ok()) << normal.error();
+    ASSERT_TRUE(height.ok()) << height.error();
+    EXPECT_EQ(colour->format, TextureFormat::Astc6x6);
+    EXPECT_EQ(colour->levels.size(), 5u);  // 16x16 with mips
+    EXPECT_EQ(normal->format, TextureFormat::Bc5);
+    EXPECT_EQ(normal->slot, MapSlot::Normal);
+    EXPECT_EQ(height->levels.size(), 1u);  // mipmaps: false
+    // The AO map has no choice and no compressed file; the preset still names the PNGs.
+    EXPECT_FALSE(std::filesystem::exists(folder + "/test_brick_ao.ktx2"));
+    EXPECT_FALSE(std::filesystem::exists(folder + "/test_brick_ao.dds"));
+  }
+  const std::string none = freshFolder("uncompressed");
+  ASSERT_TRUE(exportPackage(preset, none, {PackageMapFormat::Png16, PackageTextures::None}).ok());
+  EXPECT_FALSE(std::filesystem::exists(none + "/test_brick_normal.ktx2"));
 }
 
 TEST(PackageExport, AFolderThatCannotBeMadeIsReportedByName) {

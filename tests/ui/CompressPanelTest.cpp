@@ -1,0 +1,244 @@
+// The Compress panel in the real window: compression runs in the background (the event loop
+// keeps turning), the results are listed, the viewport renders the compressed blocks (natively
+// on this driver, as the status bar says) in a wipe against the original, Cancel leaves the
+// material and the earlier results as they were, the 2D compare view is texel-exact when
+// zoomed, and "compare all formats" fills its table and chart and hands a format back.
+#include "support/TestPaths.h"
+#include "ui/CompareAllDialog.h"
+#include "ui/CompareDialog.h"
+#include "ui/CompareView.h"
+#include "ui/CompressPanel.h"
+#include "ui/MainWindow.h"
+#include "ui/MaterialDocument.h"
+#include "ui/ViewportWidget.h"
+
+#include <QChartView>
+#include <QComboBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTest>
+#include <QTimer>
+
+#include <gtest/gtest.h>
+
+namespace relief::test {
+namespace {
+
+using core::MapSlot;
+using core::TextureFormat;
+
+double meanDifference(const QImage& a, const QImage& b) {
+  const QImage x = a.convertToFormat(QImage::Format_RGBA8888);
+  const QImage y = b.convertToFormat(QImage::Format_RGBA8888);
+  double sum = 0.0;
+  for (int row = 0; row < x.height(); ++row) {
+    const uchar* p = x.constScanLine(row);
+    const uchar* q = y.constScanLine(row);
+    for (int i = 0; i < x.width() * 4; ++i)
+      sum += std::abs(int(p[i]) - int(q[i]));
+  }
+  return sum / (double(x.width()) * x.height() * 4.0 * 255.0);
+}
+
+class CompressPanelTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    m_window = std::make_unique<ui::MainWindow>();
+    m_window->resize(1200, 760);
+    m_window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("bricks"))));
+  }
+  ui::CompressPanel* panel() { return m_window->compressPanel(); }
+  ui::MaterialDocument* document() { return m_window->document(); }
+
+  void choose(MapSlot slot, std::optional<TextureFormat> format,
+              core::CompressionQuality quality = core::CompressionQuality::Fast) {
+    QComboBox* box = panel()->formatBox(slot);
+    box->setCurrentIndex(box->findData(format ? int(*format) : -1));
+    ASSERT_GE(box->currentIndex(), 0);
+    panel()->qualityBox(slot)->setCurrentIndex(panel()->qualityBox(slot)->findData(int(quality)));
+  }
+
+  std::unique_ptr<ui::MainWindow> m_window;
+};
+
+TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks) {
+  const auto colour = document()->material().map(MapSlot::Color).image;
+  const auto normal = document()->material().map(MapSlot::Normal).image;
+  choose(MapSlot::Color, TextureFormat::Bc1);
+  choose(MapSlot::Normal, TextureFormat::Bc5);
+  choose(MapSlot::Height, TextureFormat::Bc4);
+  // The choices are document state: saved with the preset, undoable.
+  EXPECT_EQ(document()->compression(MapSlot::Normal).format, "bc5");
+  EXPECT_EQ(document()->compression(MapSlot::Color).quality, "fast");
+
+  // The GUI keeps turning while the maps compress: a 10 ms timer ticks during the run.
+  int ticks = 0;
+  QTimer heartbeat;
+  QObject::connect(&heartbeat, &QTimer::timeout, [&ticks] { ++ticks; });
+  heartbeat.start(10);
+  QSignalSpy finished(panel()->runner(), &ui::CompressionRunner::finished);
+  QTest::mouseClick(panel()->compressButton(), Qt::LeftButton);
+  EXPECT_TRUE(panel()->runner()->isRunning());
+  EXPECT_FALSE(panel()->compressButton()->isEnabled());
+  ASSERT_TRUE(finished.wait(120000));
+  heartbeat.stop();
+  EXPECT_GT(ticks, 3) << "the event loop stalled while compressing";
+
+  ASSERT_EQ(panel()->outcomes().size(), 3u);
+  EXPECT_EQ(panel()->resultsTable()->rowCount(), 3);
+  const ui::CompressionOutcome& bc5 = panel()->outcomes().at(MapSlot::Normal);
+  ASSERT_TRUE(bc5.report.normal.has_value());
+  EXPECT_LT(bc5.report.normal->meanDegrees, 1.0);
+  EXPECT_EQ(bc5.texture->levels.size(), 11u);  // mipmaps on by default: 1024 .. 1
+  // The document's maps are untouched: compression is a preview.
+  EXPECT_EQ(document()->material().map(MapSlot::Color).image, colour);
+  EXPECT_EQ(document()->material().map(MapSlot::Normal).image, normal);
+
+  // The panel switched the viewport to the wipe; llvmpipe has every BC format, so the status
+  // bar says the blocks went to the GPU as they are.
+  ui::ViewportWidget* viewport = m_window->viewport();
+  EXPECT_EQ(viewport->compressedView(), ui::ViewportWidget::CompressedView::Wipe);
+  const QImage wipe = viewport->grabFramebuffer();
+  QTest::qWait(50);
+  QLabel* upload = m_window->compressedUploadLabel();
+  EXPECT_TRUE(upload->isVisible());
+  EXPECT_NE(upload->text().indexOf(QStringLiteral("Normal BC5 (ATI2, 3Dc) uploaded natively")), -1)
+      << upload->text().toStdString();
+
+  // Compressed maps change the picture a little; the original is the original again.
+  panel()->viewBox()->setCurrentIndex(0);
+  const QImage original = viewport->grabFramebuffer();
+  panel()->viewBox()->setCurrentIndex(1);
+  const QImage compressed = viewport->grabFramebuffer();
+  const double change = meanDifference(original, compressed);
+  EXPECT_GT(change, 0.0);
+  EXPECT_LT(change, 3.0 / 255.0);
+  EXPECT_GT(meanDifference(original, wipe), 0.0);
+
+  // A new map in a slot drops that slot's stale preview.
+  document()->setMap(MapSlot::Height, std::make_shared<core::Image>(64, 64, 1), QString());
+  EXPECT_EQ(panel()->outcomes().count(MapSlot::Height), 0u);
+  EXPECT_EQ(panel()->resultsTable()->rowCount(), 2);
+}
+
+TEST_F(CompressPanelTest, CancelLeavesTheMaterialAndTheEarlierResults) {
+  choose(MapSlot::Color, std::nullopt);
+  choose(MapSlot::Normal, std::nullopt);
+  choose(MapSlot::Height, TextureFormat::Bc4);
+  QSignalSpy finished(panel()->runner(), &ui::CompressionRunner::finished);
+  panel()->compress();
+  ASSERT_TRUE(finished.wait(120000));
+  ASSERT_EQ(panel()->outcomes().size(), 1u);
+  const auto earlier = panel()->outcomes().at(MapSlot::Height).texture;
+
+  // A slow job (ASTC 4x4 at best), cancelled as soon as it reports progress.
+  choose(MapSlot::Color, TextureFormat::Astc4x4, core::CompressionQuality::Best);
+  const core::Material before = document()->material();
+  QSignalSpy cancelled(panel()->runner(), &ui::CompressionRunner::cancelled);
+  QSignalSpy progress(panel()->runner(), &ui::CompressionRunner::progress);
+  panel()->compress();
+  ASSERT_TRUE(progress.wait(60000));
+  QTest::mouseClick(panel()->cancelButton(), Qt::LeftButton);
+  ASSERT_TRUE(cancelled.wait(60000));
+  EXPECT_TRUE(panel()->compressButton()->isEnabled());
+  // Nothing from the cancelled run: the earlier BC4 result is still the only one.
+  ASSERT_EQ(panel()->outcomes().size(), 1u);
+  EXPECT_EQ(panel()->outcomes().at(MapSlot::Height).texture, earlier);
+  for (MapSlot slot : core::kAllMapSlots)
+    EXPECT_EQ(document()->material().map(slot).image, before.map(slot).image);
+}
+
+TEST_F(CompressPanelTest, TheCompareViewIsTexelExactAndShowsDifferences) {
+  choose(MapSlot::Color, TextureFormat::Bc1);
+  choose(MapSlot::Normal, std::nullopt);
+  choose(MapSlot::Height, std::nullopt);
+  QSignalSpy finished(panel()->runner(), &ui::CompressionRunner::finished);
+  panel()->compress();
+  ASSERT_TRUE(finished.wait(120000));
+  panel()->openCompare();
+  ui::CompareDialog* dialog = panel()->compareDialog();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+  ui::CompareView* view = dialog->view();
+  const ui::CompressionOutcome& outcome = panel()->outcomes().at(MapSlot::Color);
+
+  // Zoomed to 8:1 about texel (20, 30) (fitted, the whole map is on screen, so it stays there),
+  // with the wipe at the far right (all original), then the far left (all compressed): the
+  // centre of the texel shows exactly that texel of each image, unsmoothed.
+  view->setZoom(8.0, view->toWidget(QPointF(20.5, 30.5)));
+  const auto texelColour = [&](double wipe) {
+    view->setWipeFraction(wipe);
+    const QImage picture = view->picture();
+    const QPointF centre = view->toWidget(QPointF(20.5, 30.5));
+    return picture.pixelColor(int(centre.x()), int(centre.y()));
+  };
+  const auto expected = [](const core::Image& image) {
+    return QColor(int(std::lround(image.at(20, 30, 0) * 255.0f)),
+                  int(std::lround(image.at(20, 30, 1) * 255.0f)),
+                  int(std::lround(image.at(20, 30, 2) * 255.0f)));
+  };
+  EXPECT_EQ(texelColour(1.0), expected(*outcome.job.map));
+  EXPECT_EQ(texelColour(0.0), expected(*outcome.decoded));
+
+  // Difference x100 and the thresholded view are different pictures from the wipe; the gain
+  // slider is only enabled for the difference.
+  dialog->modeBox()->setCurrentIndex(2);
+  EXPECT_EQ(view->mode(), ui::CompareView::Mode::Difference);
+  EXPECT_TRUE(dialog->gainSlider()->isEnabled());
+  EXPECT_FALSE(dialog->thresholdBox()->isEnabled());
+  dialog->gainSlider()->setValue(100);
+  EXPECT_DOUBLE_EQ(view->gain(), 100.0);
+  view->fitToView();
+  const QImage difference = view->picture();
+  dialog->modeBox()->setCurrentIndex(3);
+  EXPECT_TRUE(dialog->thresholdBox()->isEnabled());
+  const QImage thresholded = view->picture();
+  EXPECT_GT(meanDifference(difference, thresholded), 0.0);
+  dialog->channelBox()->setCurrentIndex(2);  // green alone
+  EXPECT_EQ(view->channel(), std::optional<int>(1));
+  dialog->close();
+}
+
+TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatBack) {
+  ui::CompareAllDialog* dialog = panel()->compareAllDialog();
+  QSignalSpy finished(dialog->runner(), &ui::CompressionRunner::finished);
+  dialog->start(MapSlot::Height, document()->material().map(MapSlot::Height).image,
+                core::CompressionQuality::Fast, 0.03);
+  dialog->show();
+  ASSERT_TRUE(finished.wait(240000));
+  const std::size_t formats = core::formatsForSlot(MapSlot::Height).size();
+  EXPECT_EQ(dialog->table()->rowCount(), int(formats));
+  EXPECT_EQ(dialog->chartView()->chart()->series().size(), qsizetype(formats));
+  // Every row carries a finite quality and a rate matching the format's.
+  for (const ui::CompressionOutcome& outcome : dialog->outcomes()) {
+    EXPECT_DOUBLE_EQ(outcome.report.size->bitsPerPixel,
+                     core::bitsPerPixel(outcome.job.settings.format));
+    EXPECT_GT(outcome.report.image.psnr, 30.0)
+        << core::textureFormatInfo(outcome.job.settings.format).name;
+    EXPECT_TRUE(outcome.report.height.has_value());
+  }
+  // Pick EAC R11 and use it.
+  for (int row = 0; row < dialog->table()->rowCount(); ++row) {
+    if (dialog->table()->item(row, 0)->data(Qt::UserRole).toInt() == int(TextureFormat::EacR11))
+      dialog->table()->selectRow(row);
+  }
+  ASSERT_EQ(dialog->selectedFormat(), TextureFormat::EacR11);
+  QPushButton* use = nullptr;
+  for (QPushButton* button : dialog->findChildren<QPushButton*>()) {
+    if (button->text() == QStringLiteral("Use Format"))
+      use = button;
+  }
+  ASSERT_NE(use, nullptr);
+  QTest::mouseClick(use, Qt::LeftButton);
+  EXPECT_EQ(panel()->formatBox(MapSlot::Height)->currentData().toInt(), int(TextureFormat::EacR11));
+  EXPECT_EQ(document()->compression(MapSlot::Height).format, "eac-r11");
+  dialog->close();
+}
+
+}  // namespace
+}  // namespace relief::test
