@@ -603,8 +603,9 @@ bool MainWindow::saveViewportImage(const QString& path, int width, int height) {
                                  .toStdString());
     }
     offscreen.value()->setMesh(m_viewport->mesh());
-    offscreen.value()->setMaterial(m_document->material());
-    return offscreen.value()->render(m_viewport->frameSettings(), width, height);
+    const auto [material, frame] = m_viewport->shownFrame();
+    offscreen.value()->setMaterial(material);
+    return offscreen.value()->render(frame, width, height);
   }();
   core::Status saved =
       image ? core::saveImage(image.value(), path.toStdString(), core::SampleFormat::UInt8)

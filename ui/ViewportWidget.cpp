@@ -145,6 +145,19 @@ bool ViewportWidget::showsCompressed() const {
   return m_compressedView != CompressedView::Original && !m_previews.empty();
 }
 
+std::pair<core::Material, renderer::FrameSettings> ViewportWidget::shownFrame() const {
+  renderer::FrameSettings frame = m_frame;
+  if (!showsCompressed())
+    return {m_document->material(), frame};
+  // The compressed view replaces a held A/B comparison while it is on.
+  if (m_compressedView == CompressedView::Wipe) {
+    frame.split = renderer::SplitComparison{compressedMaterial(), m_dividerFraction};
+    return {m_document->material(), frame};
+  }
+  frame.split.reset();
+  return {compressedMaterial(), frame};
+}
+
 bool ViewportWidget::hasDivider() const {
   return showsCompressed() ? m_compressedView == CompressedView::Wipe : m_frame.split.has_value();
 }
@@ -217,21 +230,11 @@ void ViewportWidget::paintGL() {
     m_renderer->setMesh(m_mesh);
     m_meshDirty = false;
   }
-  renderer::FrameSettings frame = m_frame;
+  auto [material, frame] = shownFrame();
+  m_renderer->setMaterial(material);
   std::optional<core::Material> compressed;
-  if (showsCompressed()) {
-    // The compressed view replaces a held A/B comparison while it is on.
-    compressed = compressedMaterial();
-    if (m_compressedView == CompressedView::Wipe) {
-      m_renderer->setMaterial(m_document->material());
-      frame.split = renderer::SplitComparison{*compressed, m_dividerFraction};
-    } else {
-      m_renderer->setMaterial(*compressed);
-      frame.split.reset();
-    }
-  } else {
-    m_renderer->setMaterial(m_document->material());
-  }
+  if (showsCompressed())
+    compressed = frame.split ? frame.split->material : material;
   const qreal ratio = devicePixelRatioF();
   const int pixelWidth = int(std::lround(width() * ratio));
   const int pixelHeight = int(std::lround(height() * ratio));

@@ -18,6 +18,7 @@
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace relief::renderer {
@@ -73,7 +74,10 @@ class ViewportWidget : public QOpenGLWidget {
   const QString& compressedUploadSummary() const { return m_uploadSummary; }
 
   // The frame as the renderer gets it (for offscreen renders of exactly this view).
-  renderer::FrameSettings frameSettings() const { return m_frame; }
+  renderer::FrameSettings frameSettings() const { return shownFrame().second; }
+  // The material drawn (left of the divider when there is one) and the frame, exactly as the
+  // viewport draws them, compressed previews included.
+  std::pair<core::Material, renderer::FrameSettings> shownFrame() const;
   // The error view's last numbers, when it has finished.
   const std::optional<core::UvErrorMap>& errorMap() const { return m_errorMap; }
 

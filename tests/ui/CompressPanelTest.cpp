@@ -120,6 +120,14 @@ TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks)
   EXPECT_GT(change, 0.0);
   EXPECT_LT(change, 3.0 / 255.0);
   EXPECT_GT(meanDifference(original, wipe), 0.0);
+  // Save Viewport Image renders what the viewport shows, compressed maps included.
+  const std::string folder = scratchFolder();
+  ASSERT_TRUE(m_window->saveViewportImage(QString::fromStdString(folder + "/c.png"), 320, 200));
+  panel()->viewBox()->setCurrentIndex(0);
+  ASSERT_TRUE(m_window->saveViewportImage(QString::fromStdString(folder + "/o.png"), 320, 200));
+  EXPECT_GT(meanDifference(QImage(QString::fromStdString(folder + "/c.png")),
+                           QImage(QString::fromStdString(folder + "/o.png"))),
+            0.0);
 
   // A new map in a slot drops that slot's stale preview.
   document()->setMap(MapSlot::Height, std::make_shared<core::Image>(64, 64, 1), QString());
