@@ -17,52 +17,61 @@ bool hasVersion(int major, int minor) {
   return context && context->format().version() >= qMakePair(major, minor);
 }
 
-}  // namespace
+// The GL feature a format comes with.
+enum class GpuFamily { S3tc, Rgtc, Etc2Eac, Astc };
 
-std::string formatRequirement(core::TextureFormat format) {
+GpuFamily familyOf(core::TextureFormat format) {
   using core::TextureFormat;
   switch (format) {
     case TextureFormat::Bc1:
     case TextureFormat::Bc2:
     case TextureFormat::Bc3:
     case TextureFormat::Dxt5nm:
-      return "GL_EXT_texture_compression_s3tc";
+      return GpuFamily::S3tc;
     case TextureFormat::Bc4:
     case TextureFormat::Bc5:
-      return "OpenGL 3.0 (RGTC)";
+      return GpuFamily::Rgtc;
     case TextureFormat::Etc1:
     case TextureFormat::Etc2:
     case TextureFormat::Etc2A:
     case TextureFormat::EacR11:
     case TextureFormat::EacRg11:
-      return "OpenGL 4.3 or GL_ARB_ES3_compatibility (ETC2/EAC)";
+      return GpuFamily::Etc2Eac;
     default:
-      return "GL_KHR_texture_compression_astc_ldr";
+      return GpuFamily::Astc;
   }
 }
 
+}  // namespace
+
+std::string formatRequirement(core::TextureFormat format) {
+  switch (familyOf(format)) {
+    case GpuFamily::S3tc:
+      return "GL_EXT_texture_compression_s3tc";
+    case GpuFamily::Rgtc:
+      return "OpenGL 3.0 (RGTC)";
+    case GpuFamily::Etc2Eac:
+      return "OpenGL 4.3 or GL_ARB_ES3_compatibility (ETC2/EAC)";
+    case GpuFamily::Astc:
+      break;
+  }
+  return "GL_KHR_texture_compression_astc_ldr";
+}
+
 bool gpuSupportsFormat(core::TextureFormat format, bool srgb) {
-  using core::TextureFormat;
-  switch (format) {
-    case TextureFormat::Bc1:
-    case TextureFormat::Bc2:
-    case TextureFormat::Bc3:
-    case TextureFormat::Dxt5nm:
+  switch (familyOf(format)) {
+    case GpuFamily::S3tc:
       return hasExtension("GL_EXT_texture_compression_s3tc") &&
              (!srgb || hasExtension("GL_EXT_texture_sRGB") ||
               hasExtension("GL_EXT_texture_compression_s3tc_srgb"));
-    case TextureFormat::Bc4:
-    case TextureFormat::Bc5:
+    case GpuFamily::Rgtc:
       return hasVersion(3, 0) || hasExtension("GL_ARB_texture_compression_rgtc");
-    case TextureFormat::Etc1:
-    case TextureFormat::Etc2:
-    case TextureFormat::Etc2A:
-    case TextureFormat::EacR11:
-    case TextureFormat::EacRg11:
+    case GpuFamily::Etc2Eac:
       return hasVersion(4, 3) || hasExtension("GL_ARB_ES3_compatibility");
-    default:
-      return hasExtension("GL_KHR_texture_compression_astc_ldr");
+    case GpuFamily::Astc:
+      break;
   }
+  return hasExtension("GL_KHR_texture_compression_astc_ldr");
 }
 
 std::unique_ptr<QOpenGLTexture> createCompressedTexture(const core::CompressedTexture& texture) {

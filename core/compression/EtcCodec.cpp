@@ -71,6 +71,16 @@ int texelIndex(std::uint64_t word, int x, int y) {
   return int((word >> (16 + bit)) & 1) << 1 | int((word >> bit) & 1);
 }
 
+// T and H modes: each texel's 2-bit index picks one of four paint colours.
+void paintTexels(std::uint64_t word, const int paint[4][3], float rgb[16][3]) {
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      for (int ch = 0; ch < 3; ++ch)
+        rgb[y * 4 + x][ch] = float(paint[texelIndex(word, x, y)][ch]) / 255.0f;
+    }
+  }
+}
+
 }  // namespace
 
 void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]) {
@@ -105,12 +115,7 @@ void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]) {
         paint[2][ch] = c2[ch];
         paint[3][ch] = clamp255(c2[ch] - d);
       }
-      for (int y = 0; y < 4; ++y) {
-        for (int x = 0; x < 4; ++x) {
-          for (int ch = 0; ch < 3; ++ch)
-            rgb[y * 4 + x][ch] = float(paint[texelIndex(word, x, y)][ch]) / 255.0f;
-        }
-      }
+      paintTexels(word, paint, rgb);
       return;
     }
     if (second[1] < 0 || second[1] > 31) {
@@ -129,12 +134,7 @@ void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]) {
         paint[2][ch] = clamp255(c2[ch] + d);
         paint[3][ch] = clamp255(c2[ch] - d);
       }
-      for (int y = 0; y < 4; ++y) {
-        for (int x = 0; x < 4; ++x) {
-          for (int ch = 0; ch < 3; ++ch)
-            rgb[y * 4 + x][ch] = float(paint[texelIndex(word, x, y)][ch]) / 255.0f;
-        }
-      }
+      paintTexels(word, paint, rgb);
       return;
     }
     if (second[2] < 0 || second[2] > 31) {

@@ -114,6 +114,20 @@ TEST(DdsFileTest, Dx10HeadersFromOtherToolsAreRead) {
   EXPECT_EQ(back->levels[0].data, texture.levels[0].data);
 }
 
+// The channels a BC format holds (BC1 here is opaque RGB).
+int channelsHeld(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::Bc4:
+      return 1;
+    case TextureFormat::Bc5:
+      return 2;
+    case TextureFormat::Bc1:
+      return 3;
+    default:
+      return 4;
+  }
+}
+
 // The decoded texels as 8-bit values, for comparing with readers that decode to 8 bits.
 float channelOf(const Image& image, int x, int y, int c) {
   return image.at(x, y, std::min(c, image.channels() - 1));
@@ -139,10 +153,7 @@ TEST(DdsFileTest, OpenImageIOReadsOurFilesWithOurPixels) {
     ASSERT_TRUE(input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
     // OpenImageIO gives BC4 one channel and BC5 red and green (with a blue it may rebuild);
     // the channels both hold must agree within the rounding of 8-bit interpolation.
-    const int compared = format == TextureFormat::Bc4   ? 1
-                         : format == TextureFormat::Bc5 ? 2
-                         : format == TextureFormat::Bc1 ? 3
-                                                        : 4;
+    const int compared = channelsHeld(format);
     double worst = 0.0;
     for (int y = 0; y < 20; ++y) {
       for (int x = 0; x < 36; ++x) {
@@ -183,10 +194,7 @@ TEST(DdsFileTest, PillowReadsOurFilesWithOurPixels) {
     ASSERT_TRUE(file.read(reinterpret_cast<char*>(rgba.data()), std::streamsize(rgba.size())));
     const Image ours = decodeLevel(texture).value();
     // Pillow shows BC4 as grey (L), BC5 as red and green.
-    const int compared = format == TextureFormat::Bc4   ? 1
-                         : format == TextureFormat::Bc5 ? 2
-                         : format == TextureFormat::Bc1 ? 3
-                                                        : 4;
+    const int compared = channelsHeld(format);
     double worst = 0.0;
     for (int y = 0; y < 20; ++y) {
       for (int x = 0; x < 36; ++x) {
