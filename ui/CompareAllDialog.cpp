@@ -207,8 +207,10 @@ void CompareAllDialog::addRow(const CompressionOutcome& outcome) {
 void CompareAllDialog::updateChart() {
   QChart* chart = m_chartView->chart();
   chart->removeAllSeries();
-  for (QAbstractAxis* axis : chart->axes())
-    chart->removeAxis(axis);
+  for (QAbstractAxis* axis : chart->axes()) {
+    chart->removeAxis(axis);  // hands the axis back to us
+    delete axis;
+  }
   const bool normal = m_slot == core::MapSlot::Normal;
   chart->setTitle(normal ? tr("Mean angular error against bits per texel (lower is better)")
                          : tr("PSNR against bits per texel (higher is better)"));
