@@ -197,11 +197,13 @@ std::string MaterialRenderer::compressedUploadSummary(const core::Material& mate
     const bool native = m_textures.uploadedNatively(material, slot).value_or(false);
     if (!summary.empty())
       summary += "; ";
-    summary += std::string(core::mapSlotLabel(slot)) + " " +
-               std::string(core::textureFormatInfo(compressed->format).label) +
-               (native ? " uploaded natively"
-                       : " decoded by Relief (the driver lacks " +
-                             formatRequirement(compressed->format) + ")");
+    summary +=
+        std::string(core::mapSlotLabel(slot)) + " " +
+        std::string(core::textureFormatInfo(compressed->format).label) +
+        (native                                  ? " uploaded natively"
+         : !m_textures.nativeCompressedUploads() ? " decoded by Relief (Preferences)"
+                                                 : " decoded by Relief (the driver lacks " +
+                                                       formatRequirement(compressed->format) + ")");
   }
   return summary;
 }

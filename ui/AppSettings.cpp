@@ -72,6 +72,14 @@ void setAutosaveMinutes(int minutes) {
   QSettings().setValue(QStringLiteral("preferences/autosaveMinutes"), minutes);
 }
 
+bool nativeCompressedUploads() {
+  return QSettings().value(QStringLiteral("preferences/nativeCompressedUploads"), true).toBool();
+}
+
+void setNativeCompressedUploads(bool native) {
+  QSettings().setValue(QStringLiteral("preferences/nativeCompressedUploads"), native);
+}
+
 bool openSampleOnStart() {
   return QSettings().value(QStringLiteral("preferences/openSampleOnStart"), true).toBool();
 }

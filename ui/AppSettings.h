@@ -26,6 +26,10 @@ void setLastFolder(const QString& purpose, const QString& folder);
 // Preferences (the Preferences dialog).
 int autosaveMinutes();  // 0: off. Default 2.
 void setAutosaveMinutes(int minutes);
+// Compressed previews go to the GPU as blocks when the driver has the format (default), or are
+// always decoded by Relief (to compare the driver's decoding with Relief's).
+bool nativeCompressedUploads();
+void setNativeCompressedUploads(bool native);
 bool openSampleOnStart();  // with no files on the command line. Default true.
 void setOpenSampleOnStart(bool open);
 QString defaultMesh();  // a primitive's name for new documents. Default "plane".

@@ -129,6 +129,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_document, &MaterialDocument::materialReset, this, &MainWindow::updateTitle);
   connect(m_document, &MaterialDocument::fileSaved, this, &MainWindow::updateTitle);
   m_viewport->setLight(settings::viewportLight());
+  m_viewport->setNativeCompressedUploads(settings::nativeCompressedUploads());
   resize(1400, 860);
   restoreWindowState();
   updateTitle();
@@ -548,8 +549,10 @@ void MainWindow::showShortcuts() {
 
 void MainWindow::showPreferences() {
   PreferencesDialog dialog(this);
-  if (dialog.exec() == QDialog::Accepted)
+  if (dialog.exec() == QDialog::Accepted) {
     m_files->updateAutosaveInterval();
+    m_viewport->setNativeCompressedUploads(settings::nativeCompressedUploads());
+  }
 }
 
 void MainWindow::showExportDialog() {

@@ -18,7 +18,8 @@ PreferencesDialog::PreferencesDialog(QWidget* parent)
     : QDialog(parent),
       m_autosave(new QSpinBox),
       m_openSample(new QCheckBox(tr("Open the bricks sample when started without files"))),
-      m_defaultMesh(new QComboBox) {
+      m_defaultMesh(new QComboBox),
+      m_nativeCompressed(new QCheckBox(tr("Upload compressed maps to the GPU as blocks"))) {
   setWindowTitle(tr("Preferences"));
   m_autosave->setRange(0, 60);
   m_autosave->setSuffix(tr(" min"));
@@ -33,10 +34,15 @@ PreferencesDialog::PreferencesDialog(QWidget* parent)
   m_defaultMesh->setCurrentText(settings::defaultMesh());
   m_defaultMesh->setToolTip(tr("The mesh a new material is shown on."));
 
+  m_nativeCompressed->setChecked(settings::nativeCompressedUploads());
+  m_nativeCompressed->setToolTip(
+      tr("Off: compressed previews are decoded by Relief and uploaded uncompressed, to compare "
+         "the driver's decoding of the same blocks with Relief's."));
   auto* form = new QFormLayout;
   form->addRow(tr("Autosave every"), m_autosave);
   form->addRow(QString(), m_openSample);
   form->addRow(tr("Mesh for new materials"), m_defaultMesh);
+  form->addRow(QString(), m_nativeCompressed);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
   connect(buttons, &QDialogButtonBox::accepted, this, [this] {
     store();
@@ -52,6 +58,7 @@ void PreferencesDialog::store() {
   settings::setAutosaveMinutes(m_autosave->value());
   settings::setOpenSampleOnStart(m_openSample->isChecked());
   settings::setDefaultMesh(m_defaultMesh->currentText());
+  settings::setNativeCompressedUploads(m_nativeCompressed->isChecked());
 }
 
 }  // namespace relief::ui

@@ -17,6 +17,7 @@ class PreferencesDialog : public QDialog {
   explicit PreferencesDialog(QWidget* parent = nullptr);
 
   QSpinBox* autosaveBox() const { return m_autosave; }
+  QCheckBox* nativeCompressedBox() const { return m_nativeCompressed; }
   // Stores the choices (called on OK).
   void store();
 
@@ -24,6 +25,7 @@ class PreferencesDialog : public QDialog {
   QSpinBox* m_autosave;
   QCheckBox* m_openSample;
   QComboBox* m_defaultMesh;
+  QCheckBox* m_nativeCompressed;
 };
 
 }  // namespace relief::ui

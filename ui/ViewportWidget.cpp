@@ -136,6 +136,11 @@ void ViewportWidget::setCompressedPreviews(std::vector<CompressedPreview> previe
   changed();
 }
 
+void ViewportWidget::setNativeCompressedUploads(bool native) {
+  m_nativeCompressed = native;
+  changed();
+}
+
 void ViewportWidget::setCompressedView(CompressedView view) {
   m_compressedView = view;
   changed();
@@ -230,6 +235,7 @@ void ViewportWidget::paintGL() {
     m_renderer->setMesh(m_mesh);
     m_meshDirty = false;
   }
+  m_renderer->setNativeCompressedUploads(m_nativeCompressed);
   auto [material, frame] = shownFrame();
   m_renderer->setMaterial(material);
   std::optional<core::Material> compressed;

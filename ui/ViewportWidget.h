@@ -67,6 +67,8 @@ class ViewportWidget : public QOpenGLWidget {
   enum class CompressedView { Original, Compressed, Wipe };
   void setCompressedPreviews(std::vector<CompressedPreview> previews);
   void setCompressedView(CompressedView view);
+  // See MaterialRenderer::setNativeCompressedUploads; applied at the next frame.
+  void setNativeCompressedUploads(bool native);
   CompressedView compressedView() const { return m_compressedView; }
   // The document's material with every current preview substituted.
   core::Material compressedMaterial() const;
@@ -121,6 +123,7 @@ class ViewportWidget : public QOpenGLWidget {
   std::vector<CompressedPreview> m_previews;
   CompressedView m_compressedView = CompressedView::Original;
   QString m_uploadSummary;
+  bool m_nativeCompressed = true;
   renderer::FrameSettings m_frame;
   float m_dividerFraction = 0.5f;
   core::Mesh m_mesh;

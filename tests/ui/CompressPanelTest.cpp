@@ -129,6 +129,16 @@ TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks)
                            QImage(QString::fromStdString(folder + "/o.png"))),
             0.0);
 
+  // With native uploads off (Preferences) the same blocks are decoded by Relief: the status bar
+  // says so and the picture stays the same to within filtering differences.
+  panel()->viewBox()->setCurrentIndex(1);
+  viewport->setNativeCompressedUploads(false);
+  const QImage decoded = viewport->grabFramebuffer();
+  EXPECT_NE(upload->text().indexOf(QStringLiteral("decoded by Relief (Preferences)")), -1)
+      << upload->text().toStdString();
+  EXPECT_LT(meanDifference(compressed, decoded), 1.0 / 255.0);
+  viewport->setNativeCompressedUploads(true);
+
   // A new map in a slot drops that slot's stale preview.
   document()->setMap(MapSlot::Height, std::make_shared<core::Image>(64, 64, 1), QString());
   EXPECT_EQ(panel()->outcomes().count(MapSlot::Height), 0u);
