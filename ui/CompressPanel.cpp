@@ -184,8 +184,15 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewportWidget* viewpor
               seconds += outcome.report.encodeSeconds;
             }
             dropStalePreviews();
-            m_status->setText(tr("Compressed %n map(s) in %1 s.", nullptr, int(outcomes.size()))
-                                  .arg(seconds, 0, 'f', 2));
+            QString status = tr("Compressed %n map(s) in %1 s.", nullptr, int(outcomes.size()))
+                                 .arg(seconds, 0, 'f', 2);
+            for (const CompressionOutcome& outcome : outcomes) {
+              if (const double outside = core::shareOutsideUnitRange(*outcome.job.map); outside > 0)
+                status += tr(" The %1 map has %2% of its values outside 0..1: they were clamped.")
+                              .arg(toQString(core::mapSlotLabel(outcome.job.slot)).toLower())
+                              .arg(outside * 100.0, 0, 'g', 3);
+            }
+            m_status->setText(status);
             if (m_view->currentIndex() == 0)
               m_view->setCurrentIndex(2);  // show the wipe straight away
             showOutcomes();

@@ -163,6 +163,12 @@ int runCompress(const QStringList& arguments) {
                    .arg(qstr(core::mapSlotLabel(slot)).toLower()));
     return kExitUsage;
   }
+  if (const double outside = core::shareOutsideUnitRange(map.value()); outside > 0.0) {
+    printError(QStringLiteral("warning: %1: %2% of the values lie outside 0..1 and are clamped "
+                              "(GPU formats store 0..1; normalise the map first to keep them)")
+                   .arg(QString::fromStdString(inPath))
+                   .arg(outside * 100.0, 0, 'g', 3));
+  }
   if (map->channels() >= 3 && core::isSingleChannelFormat(*format)) {
     printError(QStringLiteral("warning: %1 has %2 channels; %3 keeps only the first (red)")
                    .arg(QString::fromStdString(inPath))

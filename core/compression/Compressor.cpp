@@ -140,6 +140,13 @@ std::vector<TextureFormat> formatsForSlot(MapSlot slot) {
   return formats;
 }
 
+double shareOutsideUnitRange(const Image& map) {
+  std::size_t outside = 0;
+  for (std::size_t i = 0; i < map.valueCount(); ++i)
+    outside += (map.data()[i] < 0.0f || map.data()[i] > 1.0f) ? 1 : 0;
+  return map.valueCount() ? double(outside) / double(map.valueCount()) : 0.0;
+}
+
 MapSlot likelySlot(TextureFormat format) {
   switch (textureFormatInfo(format).layout) {
     case FormatLayout::R:

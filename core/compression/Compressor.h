@@ -58,6 +58,10 @@ Result<Image> decodeAsMap(const CompressedTexture& texture, int level = 0);
 bool formatSuitsSlot(TextureFormat format, MapSlot slot);
 std::vector<TextureFormat> formatsForSlot(MapSlot slot);
 
+// The share of values outside 0..1 (float maps such as EXR heights): every GPU format here
+// stores 0..1, so they are clamped. 0 when none.
+double shareOutsideUnitRange(const Image& map);
+
 // For files that do not say what map they hold: what a format's layout suggests (a normal for
 // the two-channel formats, a height for one channel, colour otherwise).
 MapSlot likelySlot(TextureFormat format);

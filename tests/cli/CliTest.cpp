@@ -599,6 +599,23 @@ TEST(Cli, CompressWritesDdsAndKtx2WithMetrics) {
   EXPECT_EQ(decoded.width(), 64);
 }
 
+TEST(Cli, CompressWarnsWhenAFloatMapIsClamped) {
+  // An EXR height from 0 to 2: half its values cannot be stored by any GPU format here.
+  core::Image height(64, 64, 1);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x)
+      height.at(x, y, 0) = 2.0f * float(x) / 63.0f;
+  }
+  const std::string folder = scratchFolder();
+  ASSERT_TRUE(core::saveImage(height, folder + "/tall.exr", core::SampleFormat::Float).ok());
+  CliRun run = runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(folder + "/tall.exr"),
+                       QStringLiteral("--format"), QStringLiteral("bc4"), QStringLiteral("--out"),
+                       q(folder + "/tall.ktx2")});
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.err.find("tall.exr: 50% of the values lie outside 0..1"), std::string::npos)
+      << run.err;
+}
+
 TEST(Cli, CompressDecodeAndCompareRefuseBadInput) {
   const std::string folder = scratchFolder();
   const std::string colour = croppedSample("tiles/tiles_color.png");
