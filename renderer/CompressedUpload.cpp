@@ -103,12 +103,8 @@ std::unique_ptr<QOpenGLTexture> createCompressedTexture(const core::CompressedTe
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  // Two-channel normals sample as (x, y, ., .) whatever channels hold them.
-  if (const auto xy = texture.normalXYChannels()) {
-    const GLint source[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
-    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R, source[xy->first]);
-    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_G, source[xy->second]);
-  }
+  if (texture.format == core::TextureFormat::Dxt5nm)
+    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R, GL_ALPHA);
   const bool failed = gl.glGetError() != GL_NO_ERROR;
   gl.glBindTexture(GL_TEXTURE_2D, GLuint(previous));
   if (failed)

@@ -23,8 +23,8 @@ std::string formatRequirement(core::TextureFormat format);
 
 // Null when the current context cannot sample the format. Mip levels as the texture has them;
 // with one level the texture filters without mipmaps (compressed formats cannot be given a
-// generated chain). Two-channel normals are swizzled so that they sample as (x, y, ., .):
-// DXT5nm's X from alpha, an ASTC normal map's Y from alpha; the shader rebuilds z.
+// generated chain). DXT5nm's X (in alpha) is swizzled into red, so every two-channel normal
+// texture samples as (x, y, 0 or ?, 1) and the shader rebuilds z.
 std::unique_ptr<QOpenGLTexture> createCompressedTexture(const core::CompressedTexture& texture);
 
 }  // namespace relief::renderer

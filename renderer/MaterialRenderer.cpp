@@ -176,7 +176,7 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   const auto& normal = material.map(MapSlot::Normal).compressed;
   program.setUniformValue(
       "uNormalTwoChannel",
-      normal && normal->normalXYChannels() &&
+      normal && core::isTwoChannelNormalFormat(normal->format) &&
           m_textures.uploadedNatively(material, MapSlot::Normal).value_or(false));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

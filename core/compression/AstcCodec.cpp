@@ -51,11 +51,10 @@ Result<Context> makeContext(TextureFormat format, bool srgb, float quality, unsi
 
 Result<std::vector<std::uint8_t>> encodeAstc(TextureFormat format, CompressionQuality quality,
                                              bool srgb, const Image& rgba,
-                                             const WorkControl& control, bool normalMap) {
+                                             const WorkControl& control) {
   const TextureFormatInfo& info = textureFormatInfo(format);
   const unsigned threads = unsigned(std::max(1, QThread::idealThreadCount()));
-  Result<Context> context =
-      makeContext(format, srgb, preset(quality), normalMap ? ASTCENC_FLG_MAP_NORMAL : 0u, threads);
+  Result<Context> context = makeContext(format, srgb, preset(quality), 0, threads);
   if (!context)
     return makeError(context.error());
 

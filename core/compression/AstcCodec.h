@@ -14,13 +14,10 @@
 
 namespace relief::core {
 
-// `rgba` holds 4 channels in 0..1 (sRGB-encoded values when `srgb`). With `normalMap` it holds
-// a normal's X in red, green and blue and Y in alpha, and astcenc weighs errors by angle
-// (ASTCENC_FLG_MAP_NORMAL).
+// `rgba` holds 4 channels in 0..1 (sRGB-encoded values when `srgb`).
 Result<std::vector<std::uint8_t>> encodeAstc(TextureFormat format, CompressionQuality quality,
                                              bool srgb, const Image& rgba,
-                                             const WorkControl& control = {},
-                                             bool normalMap = false);
+                                             const WorkControl& control = {});
 // Returns RGBA (sRGB-encoded values when `srgb`, as the sRGB format stores them).
 Result<Image> decodeAstc(TextureFormat format, bool srgb, const std::uint8_t* data,
                          std::size_t size, int width, int height);

@@ -18,26 +18,8 @@ bool isBcFamily(TextureFormat format) {
   return format <= TextureFormat::Dxt5nm;
 }
 
-// How a normal map's X and Y go into a format's channels (Z is rebuilt when decoding).
-enum class NormalStorage { Xyz, XyInRg, XyInAg, XyInRa };
-
-NormalStorage normalStorage(MapSlot slot, TextureFormat format) {
-  if (slot != MapSlot::Normal)
-    return NormalStorage::Xyz;
-  switch (textureFormatInfo(format).layout) {
-    case FormatLayout::NormalRg:
-      return NormalStorage::XyInRg;
-    case FormatLayout::NormalAg:
-      return NormalStorage::XyInAg;  // DXT5nm; the encoder moves X to alpha
-    default:
-      // astcenc's normal-map mode wants X in the luminance and Y in alpha ("rrrg") and weighs
-      // the error by angle; other colour formats keep all three components.
-      return isAstc(format) ? NormalStorage::XyInRa : NormalStorage::Xyz;
-  }
-}
-
 // One texel of the map as four channels in the layout the format's encoder expects.
-void prepareTexel(const float* in, int channels, NormalStorage normal, float* out) {
+void prepareTexel(const float* in, int channels, bool twoChannelNormal, float* out) {
   if (channels >= 3) {
     out[0] = in[0];
     out[1] = in[1];
@@ -46,21 +28,24 @@ void prepareTexel(const float* in, int channels, NormalStorage normal, float* ou
     out[0] = out[1] = out[2] = in[0];
   }
   out[3] = channels == 4 ? in[3] : channels == 2 ? in[1] : 1.0f;
-  if (normal == NormalStorage::XyInRg || normal == NormalStorage::XyInAg) {
+  if (twoChannelNormal) {
     out[2] = 0.0f;  // rebuilt from X and Y when decoded
     out[3] = 1.0f;
-  } else if (normal == NormalStorage::XyInRa) {
-    out[3] = out[1];
-    out[1] = out[2] = out[0];
   }
+}
+
+bool isTwoChannelNormal(MapSlot slot, TextureFormat format) {
+  const FormatLayout layout = textureFormatInfo(format).layout;
+  return slot == MapSlot::Normal &&
+         (layout == FormatLayout::NormalRg || layout == FormatLayout::NormalAg);
 }
 
 // The whole map prepared, for astcenc (which takes whole images).
 Image prepare(const Image& map, MapSlot slot, TextureFormat format) {
-  const NormalStorage normal = normalStorage(slot, format);
+  const bool twoChannelNormal = isTwoChannelNormal(slot, format);
   Image rgba(map.width(), map.height(), 4, map.colorSpace());
   for (std::size_t p = 0; p < map.pixelCount(); ++p) {
-    prepareTexel(map.data() + p * std::size_t(map.channels()), map.channels(), normal,
+    prepareTexel(map.data() + p * std::size_t(map.channels()), map.channels(), twoChannelNormal,
                  rgba.data() + p * 4);
   }
   return rgba;
@@ -73,7 +58,7 @@ bool encodeBlocks(const Image& map, MapSlot slot, const CompressionSettings& set
   const TextureFormatInfo& info = textureFormatInfo(settings.format);
   const int width = map.width(), height = map.height();
   const int blocksX = (width + 3) / 4, blocksY = (height + 3) / 4;
-  const NormalStorage normal = normalStorage(slot, settings.format);
+  const bool twoChannelNormal = isTwoChannelNormal(slot, settings.format);
   const bool perceptual = slot == MapSlot::Color;
   out.assign(std::size_t(blocksX) * std::size_t(blocksY) * std::size_t(info.bytesPerBlock), 0);
   return parallelFor(
@@ -89,7 +74,7 @@ bool encodeBlocks(const Image& map, MapSlot slot, const CompressionSettings& set
                 validMask |= 1 << (j * 4 + i);
               // Padding repeats the edge, so even a fit that saw these texels stays close.
               prepareTexel(map.pixel(std::min(x, width - 1), std::min(y, height - 1)),
-                           map.channels(), normal, texels[j * 4 + i]);
+                           map.channels(), twoChannelNormal, texels[j * 4 + i]);
             }
           }
           std::uint8_t* block =
@@ -124,20 +109,6 @@ std::uint64_t compressedLevelSize(TextureFormat format, int width, int height) {
   const std::uint64_t blocksX = (std::uint64_t(width) + info.blockWidth - 1) / info.blockWidth;
   const std::uint64_t blocksY = (std::uint64_t(height) + info.blockHeight - 1) / info.blockHeight;
   return blocksX * blocksY * std::uint64_t(info.bytesPerBlock);
-}
-
-std::optional<std::pair<int, int>> CompressedTexture::normalXYChannels() const {
-  switch (normalStorage(slot, format)) {
-    case NormalStorage::XyInRg:
-      return std::pair{0, 1};
-    case NormalStorage::XyInAg:
-      return std::pair{3, 1};
-    case NormalStorage::XyInRa:
-      return std::pair{0, 3};
-    case NormalStorage::Xyz:
-      break;
-  }
-  return std::nullopt;
 }
 
 std::uint64_t CompressedTexture::byteSize() const {
@@ -228,9 +199,8 @@ Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
     const WorkControl part = slice(control, done / totalPixels, share);
     CompressedLevel compressed{level.width(), level.height(), {}};
     if (isAstc(settings.format)) {
-      auto encoded =
-          encodeAstc(settings.format, settings.quality, texture.srgb,
-                     prepare(level, slot, settings.format), part, slot == MapSlot::Normal);
+      auto encoded = encodeAstc(settings.format, settings.quality, texture.srgb,
+                                prepare(level, slot, settings.format), part);
       if (!encoded)
         return makeError(encoded.error());
       compressed.data = std::move(encoded).value();
@@ -283,7 +253,7 @@ Result<Image> decodeAsMap(const CompressedTexture& texture, int levelIndex) {
   Result<Image> rgba = decodeLevel(texture, levelIndex);
   if (!rgba)
     return rgba;
-  const std::optional<std::pair<int, int>> xy = texture.normalXYChannels();
+  const FormatLayout layout = textureFormatInfo(texture.format).layout;
   const MapSlot slot = texture.slot;
   const int channels = slot == MapSlot::Color    ? std::clamp(texture.sourceChannels, 3, 4)
                        : slot == MapSlot::Normal ? 3
@@ -293,10 +263,11 @@ Result<Image> decodeAsMap(const CompressedTexture& texture, int levelIndex) {
   for (std::size_t p = 0; p < map.pixelCount(); ++p) {
     const float* in = rgba->data() + p * 4;
     float* out = map.data() + p * std::size_t(channels);
-    if (xy) {
+    if (slot == MapSlot::Normal &&
+        (layout == FormatLayout::NormalRg || layout == FormatLayout::NormalAg)) {
       // Reference 003, eq. 2.1: z = sqrt(1 - x^2 - y^2) from the two stored components.
-      const float x = in[xy->first] * 2.0f - 1.0f;
-      const float y = in[xy->second] * 2.0f - 1.0f;
+      const float x = (layout == FormatLayout::NormalAg ? in[3] : in[0]) * 2.0f - 1.0f;
+      const float y = in[1] * 2.0f - 1.0f;
       const float z = std::sqrt(std::max(0.0f, 1.0f - x * x - y * y));
       out[0] = x * 0.5f + 0.5f;
       out[1] = y * 0.5f + 0.5f;

@@ -12,8 +12,6 @@
 #include "core/compression/TextureFormat.h"
 
 #include <cstdint>
-#include <optional>
-#include <utility>
 #include <vector>
 
 namespace relief::core {
@@ -38,10 +36,6 @@ struct CompressedTexture {
   std::vector<CompressedLevel> levels;
 
   std::uint64_t byteSize() const;
-  // Where a normal's X and Y are stored, when the texture holds only those two (Z rebuilt):
-  // BC5 and EAC RG11 in red and green, DXT5nm in alpha and green, ASTC normal maps (astcenc's
-  // normal mode) in red (also green and blue) and alpha. Empty for three-channel textures.
-  std::optional<std::pair<int, int>> normalXYChannels() const;
 };
 
 // Bytes of one level: whole blocks covering width x height.

@@ -105,11 +105,6 @@ std::vector<std::uint8_t> keyValueData(const CompressedTexture& texture) {
       {std::string(kSlotKey), std::string(mapSlotName(texture.slot))},
       {std::string(kChannelsKey), std::to_string(texture.sourceChannels)},
   };
-  // Two-channel normals: where X and Y are (the KTX2 swizzle key; Z is to be rebuilt).
-  if (const auto xy = texture.normalXYChannels()) {
-    const char channel[] = "rgba";
-    entries["KTXswizzle"] = std::string{channel[xy->first], channel[xy->second], '0', '1'};
-  }
   ByteWriter out;
   for (const auto& [key, value] : entries) {
     out.u32(std::uint32_t(key.size() + 1 + value.size() + 1));

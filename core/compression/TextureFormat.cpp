@@ -84,6 +84,11 @@ double bitsPerPixel(TextureFormat format) {
   return 8.0 * info.bytesPerBlock / (info.blockWidth * info.blockHeight);
 }
 
+bool isTwoChannelNormalFormat(TextureFormat format) {
+  const FormatLayout layout = textureFormatInfo(format).layout;
+  return layout == FormatLayout::NormalRg || layout == FormatLayout::NormalAg;
+}
+
 bool isSingleChannelFormat(TextureFormat format) {
   return textureFormatInfo(format).layout == FormatLayout::R;
 }

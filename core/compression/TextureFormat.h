@@ -64,7 +64,8 @@ std::string_view compressionQualityName(CompressionQuality quality);
 std::optional<CompressionQuality> findCompressionQuality(std::string_view name);
 
 double bitsPerPixel(TextureFormat format);
-bool isSingleChannelFormat(TextureFormat format);  // BC4, EAC R11
+bool isTwoChannelNormalFormat(TextureFormat format);  // BC5, DXT5nm, EAC RG11
+bool isSingleChannelFormat(TextureFormat format);     // BC4, EAC R11
 bool isAstc(TextureFormat format);
 
 constexpr std::uint32_t makeFourCC(char a, char b, char c, char d) {

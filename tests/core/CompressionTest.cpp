@@ -240,18 +240,13 @@ TEST(CompressorTest, TwoChannelNormalsRebuildZ) {
   // n = (0.3, -0.2, sqrt(1 - 0.13)), stored 0.5 + 0.5 n. Eq. 2.1 of reference 003 rebuilds Z.
   const float nx = 0.3f, ny = -0.2f, nz = std::sqrt(1.0f - nx * nx - ny * ny);
   const Image map = constantImage(16, 16, {0.5f + 0.5f * nx, 0.5f + 0.5f * ny, 0.5f + 0.5f * nz});
-  for (TextureFormat format : {TextureFormat::Bc5, TextureFormat::Dxt5nm, TextureFormat::EacRg11,
-                               TextureFormat::Astc4x4}) {
+  for (TextureFormat format : {TextureFormat::Bc5, TextureFormat::Dxt5nm, TextureFormat::EacRg11}) {
     Result<CompressedTexture> texture = compressMap(map, MapSlot::Normal, {format});
     ASSERT_TRUE(texture.ok());
-    // The GPU sees X in red (BC5, EAC RG11, ASTC's normal mode) or alpha (DXT5nm), Y in green
-    // (ASTC: alpha), no Z.
+    // The GPU sees X in red (BC5, EAC RG11) or alpha (DXT5nm), Y in green, no Z.
     const Image raw = decodeLevel(texture.value()).value();
-    const auto [xChannel, yChannel] = texture->normalXYChannels().value();
-    EXPECT_EQ(xChannel, format == TextureFormat::Dxt5nm ? 3 : 0);
-    EXPECT_EQ(yChannel, format == TextureFormat::Astc4x4 ? 3 : 1);
+    const int xChannel = format == TextureFormat::Dxt5nm ? 3 : 0;
     EXPECT_NEAR(raw.at(5, 5, xChannel), map.at(5, 5, 0), kByte);
-    EXPECT_NEAR(raw.at(5, 5, yChannel), map.at(5, 5, 1), kByte);
     const NormalError error = measureNormalError(map, decodeAsMap(texture.value()).value());
     EXPECT_LT(error.maxDegrees, 0.5) << textureFormatInfo(format).name;
   }
@@ -459,10 +454,11 @@ TEST(CompressionQualityTest, NormalFormatsMeetTheirFloors) {
   const Image normal = sampleCrop("bricks/bricks_normal.png");
   // Mean angular error ceilings in degrees. Measured: BC5 0.532 (our encoder; libsquish's gave
   // 0.676), EAC RG11 0.542 (11 bits), DXT5nm 0.989 (green interpolates between 6-bit
-  // endpoints), BC1 1.548; ASTC in astcenc's normal mode 4x4 0.427, 8x8 1.729.
-  const std::pair<TextureFormat, double> ceilings[] = {
-      {TextureFormat::Bc5, 0.65}, {TextureFormat::EacRg11, 0.65}, {TextureFormat::Dxt5nm, 1.15},
-      {TextureFormat::Bc1, 1.8},  {TextureFormat::Astc4x4, 0.5},  {TextureFormat::Astc8x8, 1.9}};
+  // endpoints), BC1 1.548.
+  const std::pair<TextureFormat, double> ceilings[] = {{TextureFormat::Bc5, 0.65},
+                                                       {TextureFormat::EacRg11, 0.65},
+                                                       {TextureFormat::Dxt5nm, 1.15},
+                                                       {TextureFormat::Bc1, 1.8}};
   double bc5 = 0.0, bc1 = 0.0;
   for (const auto& [format, ceiling] : ceilings) {
     const CompressedTexture texture = compressMap(normal, MapSlot::Normal, {format}).value();
