@@ -184,6 +184,7 @@ QOpenGLTexture& TextureCache::texture(const core::Material& material, MapSlot sl
   if (!entry.texture) {
     entry.image = image;
     if (const auto& compressed = material.map(slot).compressed) {
+      entry.compressed = true;
       if (m_nativeCompressed)
         entry.texture = createCompressedTexture(*compressed);
       entry.native = entry.texture != nullptr;
@@ -217,9 +218,9 @@ void TextureCache::setNativeCompressedUploads(bool native) {
   if (native == m_nativeCompressed)
     return;
   m_nativeCompressed = native;
-  // Compressed previews are uploaded again the other way at their next use.
+  // Compressed previews are uploaded again the other way at their next use; other maps stay.
   for (auto it = m_uploads.begin(); it != m_uploads.end();)
-    it = it->second.texture && (it->second.native || native) ? m_uploads.erase(it) : std::next(it);
+    it = it->second.compressed ? m_uploads.erase(it) : std::next(it);
 }
 
 void TextureCache::release() {

@@ -37,7 +37,8 @@ class TextureCache {
   struct Entry {
     std::shared_ptr<const core::Image> image;  // keeps the key's address from being reused
     std::unique_ptr<QOpenGLTexture> texture;
-    bool native = false;  // compressed blocks uploaded as they are
+    bool compressed = false;  // a compression preview (native blocks or decoded levels)
+    bool native = false;      // compressed blocks uploaded as they are
   };
   std::map<Key, Entry> m_uploads;
   std::array<std::unique_ptr<QOpenGLTexture>, core::kMapSlotCount> m_neutral;

@@ -3,12 +3,20 @@
 // zero, so a parser checks `ok()` once after reading a header.
 #pragma once
 
+#include "core/Result.h"
+
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace relief::core {
+
+// A reader's failure, naming the file first.
+inline Error fileError(const std::string& name, const std::string& problem) {
+  return makeError(name + ": " + problem);
+}
 
 class ByteWriter {
  public:

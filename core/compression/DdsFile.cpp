@@ -102,9 +102,7 @@ Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture) {
 
 Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
                                     const std::string& name) {
-  const auto fail = [&name](const std::string& problem) {
-    return makeError(name + ": " + problem);
-  };
+  const auto fail = [&name](const std::string& problem) { return fileError(name, problem); };
   ByteReader in(bytes);
   if (in.u32() != kMagic)
     return fail("not a DDS file (no \"DDS \" signature)");

@@ -175,9 +175,7 @@ std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture) {
 
 Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
                                      const std::string& name) {
-  const auto fail = [&name](const std::string& problem) {
-    return makeError(name + ": " + problem);
-  };
+  const auto fail = [&name](const std::string& problem) { return fileError(name, problem); };
   if (bytes.size() < kIdentifier.size() ||
       !std::equal(kIdentifier.begin(), kIdentifier.end(), bytes.begin()))
     return fail("not a KTX2 file (no KTX 20 identifier)");
