@@ -27,11 +27,19 @@ std::string displayProblem() {
   }
   xcb_connection_t* connection = xcb_connect(display, nullptr);
   const bool failed = xcb_connection_has_error(connection) != 0;
-  xcb_disconnect(connection);
   if (failed) {
+    xcb_disconnect(connection);
     return std::string("cannot connect to the X display '") + display +
            "'; is the X server (or Xvfb) running?";
   }
+  // The probe's connection stays open until the process ends. Closed now, it could be the
+  // server's last client: X servers (Xvfb too) then reset, and a connection Qt opens during the
+  // reset fails, which Qt answers with abort(). Renders run in parallel would hit this.
+  static xcb_connection_t* kept = nullptr;
+  if (kept)
+    xcb_disconnect(connection);  // a second probe: one open connection is enough
+  else
+    kept = connection;
   return {};
 }
 
