@@ -3,10 +3,10 @@
 #include "DisplayCheck.h"
 #include "SampleLocator.h"
 #include "renderer/OpenGLProbe.h"
-#include "ui/AppSettings.h"
-#include "ui/DarkTheme.h"
-#include "ui/DocumentFiles.h"
-#include "ui/MainWindow.h"
+#include "ui/document/DocumentFiles.h"
+#include "ui/window/AppSettings.h"
+#include "ui/window/DarkTheme.h"
+#include "ui/window/MainWindow.h"
 
 #include <QAction>
 #include <QApplication>

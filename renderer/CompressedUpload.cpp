@@ -17,58 +17,33 @@ bool hasVersion(int major, int minor) {
   return context && context->format().version() >= qMakePair(major, minor);
 }
 
-// The GL feature a format comes with.
-enum class GpuFamily { S3tc, Rgtc, Etc2Eac, Astc };
-
-GpuFamily familyOf(core::TextureFormat format) {
-  using core::TextureFormat;
-  switch (format) {
-    case TextureFormat::Bc1:
-    case TextureFormat::Bc2:
-    case TextureFormat::Bc3:
-    case TextureFormat::Dxt5nm:
-      return GpuFamily::S3tc;
-    case TextureFormat::Bc4:
-    case TextureFormat::Bc5:
-      return GpuFamily::Rgtc;
-    case TextureFormat::Etc1:
-    case TextureFormat::Etc2:
-    case TextureFormat::Etc2A:
-    case TextureFormat::EacR11:
-    case TextureFormat::EacRg11:
-      return GpuFamily::Etc2Eac;
-    default:
-      return GpuFamily::Astc;
-  }
-}
-
 }  // namespace
 
 std::string formatRequirement(core::TextureFormat format) {
-  switch (familyOf(format)) {
-    case GpuFamily::S3tc:
+  switch (core::textureFormatInfo(format).gpuFeature) {
+    case core::GpuFeature::S3tc:
       return "GL_EXT_texture_compression_s3tc";
-    case GpuFamily::Rgtc:
+    case core::GpuFeature::Rgtc:
       return "OpenGL 3.0 (RGTC)";
-    case GpuFamily::Etc2Eac:
+    case core::GpuFeature::Etc2Eac:
       return "OpenGL 4.3 or GL_ARB_ES3_compatibility (ETC2/EAC)";
-    case GpuFamily::Astc:
+    case core::GpuFeature::AstcLdr:
       break;
   }
   return "GL_KHR_texture_compression_astc_ldr";
 }
 
 bool gpuSupportsFormat(core::TextureFormat format, bool srgb) {
-  switch (familyOf(format)) {
-    case GpuFamily::S3tc:
+  switch (core::textureFormatInfo(format).gpuFeature) {
+    case core::GpuFeature::S3tc:
       return hasExtension("GL_EXT_texture_compression_s3tc") &&
              (!srgb || hasExtension("GL_EXT_texture_sRGB") ||
               hasExtension("GL_EXT_texture_compression_s3tc_srgb"));
-    case GpuFamily::Rgtc:
+    case core::GpuFeature::Rgtc:
       return hasVersion(3, 0) || hasExtension("GL_ARB_texture_compression_rgtc");
-    case GpuFamily::Etc2Eac:
+    case core::GpuFeature::Etc2Eac:
       return hasVersion(4, 3) || hasExtension("GL_ARB_ES3_compatibility");
-    case GpuFamily::Astc:
+    case core::GpuFeature::AstcLdr:
       break;
   }
   return hasExtension("GL_KHR_texture_compression_astc_ldr");

@@ -3,9 +3,9 @@
 // CPU trace runs wherever the caller likes (the viewport uses a worker thread).
 #pragma once
 
-#include "core/HeightField.h"
-#include "core/Image.h"
-#include "core/Result.h"
+#include "core/base/Result.h"
+#include "core/image/Image.h"
+#include "core/tracing/HeightField.h"
 #include "renderer/FrameSettings.h"
 
 namespace relief::renderer {

@@ -2,8 +2,8 @@
 // debug view, what kind of values to write, and the optional A/B split comparison.
 #pragma once
 
-#include "core/DebugView.h"
-#include "core/Material.h"
+#include "core/material/Material.h"
+#include "core/view/DebugView.h"
 #include "renderer/RenderView.h"
 
 #include <optional>

@@ -2,7 +2,7 @@
 // in a VAO. Needs a current context for upload, draw and destruction.
 #pragma once
 
-#include "core/Mesh.h"
+#include "core/mesh/Mesh.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>

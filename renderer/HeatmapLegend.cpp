@@ -1,7 +1,7 @@
 // HeatmapLegend; see HeatmapLegend.h.
 #include "renderer/HeatmapLegend.h"
 
-#include "core/Heatmap.h"
+#include "core/image/Heatmap.h"
 
 #include <QFont>
 #include <QFontMetrics>

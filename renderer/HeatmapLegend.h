@@ -3,8 +3,8 @@
 // and the CLI onto the image it writes, so both show the same scale.
 #pragma once
 
-#include "core/DebugView.h"
-#include "core/Material.h"
+#include "core/material/Material.h"
+#include "core/view/DebugView.h"
 
 #include <QImage>
 #include <QString>

@@ -237,25 +237,25 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
       "uDepthDisplayRange",
       QVector2D(std::max(view.camera.distance - radius, 0.0f), view.camera.distance + radius));
 
-  const auto parameter = [&material](ParamId id) { return material.parameterf(id); };
-  const auto count = [&material](ParamId id) { return int(material.parameter(id)); };
-  program.setUniformValue("uHeightScale", parameter(ParamId::HeightScale));
-  program.setUniformValue("uHeightBias", parameter(ParamId::HeightBias));
-  program.setUniformValue("uHeightIsDepth", material.parameterFlag(ParamId::HeightIsDepth));
-  program.setUniformValue("uMinSamples", count(ParamId::MinSamples));
-  program.setUniformValue("uMaxSamples", count(ParamId::MaxSamples));
-  program.setUniformValue("uRefinementSteps", count(ParamId::RefinementSteps));
-  program.setUniformValue("uLodFade", parameter(ParamId::LodFade));
-  program.setUniformValue("uShadowStrength", parameter(ParamId::ShadowStrength));
-  program.setUniformValue("uShadowSamples", count(ParamId::ShadowSamples));
-  program.setUniformValue("uShadowSoftness",
-                          float(glm::radians(material.parameter(ParamId::ShadowSoftness))));
-  program.setUniformValue("uShadowLimit", material.parameterFlag(ParamId::ShadowLimit));
-  program.setUniformValue("uTiling", parameter(ParamId::Tiling));
-  program.setUniformValue("uNormalStrength", parameter(ParamId::NormalStrength));
-  program.setUniformValue("uNormalYDown", material.parameterFlag(ParamId::NormalYDown));
-  program.setUniformValue("uSpecular", parameter(ParamId::Specular));
-  program.setUniformValue("uShininess", parameter(ParamId::Shininess));
+  // Every parameter with a uniform, from the table (core/material/Parameters.cpp).
+  for (const core::ParameterSpec& spec : core::allParameters()) {
+    if (spec.uniform.empty())
+      continue;
+    const double value = material.parameter(spec.id) * spec.uniformScale;
+    const char* name = spec.uniform.data();  // literals in the table: NUL-terminated
+    switch (spec.kind) {
+      case core::ParamKind::Float:
+        program.setUniformValue(name, float(value));
+        break;
+      case core::ParamKind::Int:
+      case core::ParamKind::Choice:
+        program.setUniformValue(name, int(value));
+        break;
+      case core::ParamKind::Bool:
+        program.setUniformValue(name, value != 0.0);
+        break;
+    }
+  }
 
   const bool packed = material.parameterFlag(ParamId::HeightInNormalAlpha);
   const core::Image* heightSource = material.image(packed ? MapSlot::Normal : MapSlot::Height);

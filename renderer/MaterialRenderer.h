@@ -4,10 +4,10 @@
 // calls need the same current context.
 #pragma once
 
-#include "core/Image.h"
-#include "core/Material.h"
-#include "core/Mesh.h"
-#include "core/Result.h"
+#include "core/base/Result.h"
+#include "core/image/Image.h"
+#include "core/material/Material.h"
+#include "core/mesh/Mesh.h"
 #include "renderer/FrameSettings.h"
 #include "renderer/GpuMesh.h"
 #include "renderer/ShaderProgram.h"

@@ -3,10 +3,10 @@
 // offscreen surface; needs a QGuiApplication on the xcb platform (an X server or Xvfb).
 #pragma once
 
-#include "core/Image.h"
-#include "core/Material.h"
-#include "core/Mesh.h"
-#include "core/Result.h"
+#include "core/base/Result.h"
+#include "core/image/Image.h"
+#include "core/material/Material.h"
+#include "core/mesh/Mesh.h"
 #include "renderer/ErrorView.h"
 #include "renderer/FrameSettings.h"
 

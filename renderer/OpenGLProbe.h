@@ -3,7 +3,7 @@
 // the CLI ask here first and print a clear message instead.
 #pragma once
 
-#include "core/Result.h"
+#include "core/base/Result.h"
 
 #include <QSurfaceFormat>
 

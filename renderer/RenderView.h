@@ -1,8 +1,8 @@
 // RenderView: everything about a frame that is not the material: camera, light, background.
 #pragma once
 
-#include "core/DirectionalLight.h"
-#include "core/OrbitCamera.h"
+#include "core/view/DirectionalLight.h"
+#include "core/view/OrbitCamera.h"
 
 #include <glm/glm.hpp>
 

@@ -2,7 +2,7 @@
 // and line they came from. Pure string work with no GL, so it is unit-tested on its own.
 #pragma once
 
-#include "core/Result.h"
+#include "core/base/Result.h"
 
 #include <functional>
 #include <optional>

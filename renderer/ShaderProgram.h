@@ -3,7 +3,7 @@
 // program and returns the driver's log mapped back to file:line.
 #pragma once
 
-#include "core/Result.h"
+#include "core/base/Result.h"
 #include "renderer/ShaderIncludeResolver.h"
 
 #include <QOpenGLShaderProgram>

@@ -3,8 +3,8 @@
 // Everything else is a uniform, so dragging a slider never recompiles.
 #pragma once
 
-#include "core/DebugView.h"
-#include "core/Material.h"
+#include "core/material/Material.h"
+#include "core/view/DebugView.h"
 #include "renderer/FrameSettings.h"
 
 #include <string>

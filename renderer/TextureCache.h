@@ -3,7 +3,7 @@
 // it, and an empty slot gets a neutral 1x1 texture so the shaders never branch on missing maps.
 #pragma once
 
-#include "core/Material.h"
+#include "core/material/Material.h"
 
 #include <QOpenGLPixelTransferOptions>
 #include <QOpenGLTexture>

@@ -1,8 +1,8 @@
 // CliCommon; see CliCommon.h.
 #include "CliCommon.h"
 
-#include "core/MeshImport.h"
-#include "core/MeshPrimitives.h"
+#include "core/mesh/MeshImport.h"
+#include "core/mesh/MeshPrimitives.h"
 
 #include <QFileInfo>
 

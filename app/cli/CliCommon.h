@@ -1,7 +1,7 @@
 // Shared pieces of relief-cli's commands: exit codes, printing, argument parsing helpers.
 #pragma once
 
-#include "core/Mesh.h"
+#include "core/mesh/Mesh.h"
 
 #include <QCommandLineParser>
 #include <QString>

@@ -2,12 +2,10 @@
 #include "CompressCommand.h"
 
 #include "CliCommon.h"
-#include "core/ImageIO.h"
-#include "core/compression/CompressionReport.h"
-#include "core/compression/Compressor.h"
+#include "core/compression/CompressionJob.h"
 #include "core/compression/TextureFile.h"
+#include "core/image/ImageIO.h"
 
-#include <QElapsedTimer>
 #include <QJsonDocument>
 
 namespace relief::cli {
@@ -25,8 +23,8 @@ QString formatNames() {
       formats, [](core::TextureFormat f) { return core::textureFormatInfo(f).name; });
 }
 
-// The parallax height scale the height metrics assume when none is given: the samples' value.
-constexpr double kDefaultHeightScale = 0.05;
+// The parallax height scale the height metrics assume when none is given: the material's.
+const double kDefaultHeightScale = core::parameterDefault(core::ParamId::HeightScale);
 
 // A candidate: an ordinary image, or a compressed texture decoded as the map it holds.
 struct Candidate {
@@ -140,7 +138,7 @@ int runCompress(const QStringList& arguments) {
                QStringLiteral(": the output must end in .dds or .ktx2"));
     return kExitUsage;
   }
-  if (*container == core::TextureContainer::Dds && core::textureFormatInfo(*format).fourCC == 0) {
+  if (!core::containerHolds(*container, *format)) {
     printError(QString::fromStdString(outPath) + QStringLiteral(": ") +
                qstr(core::textureFormatInfo(*format).label) +
                QStringLiteral(" has no DDS format that common readers open; use .ktx2"));
@@ -154,60 +152,50 @@ int runCompress(const QStringList& arguments) {
     return kExitFailure;
   }
   // Without --normal or --height a map is colour, except that a one-channel format holds data.
-  const core::MapSlot slot = slotOption(parser).value_or(
+  core::CompressionJob job;
+  job.slot = slotOption(parser).value_or(
       core::isSingleChannelFormat(*format) ? core::MapSlot::Height : core::MapSlot::Color);
-  if (!core::formatSuitsSlot(*format, slot)) {
-    printError(qstr(core::textureFormatInfo(*format).label) +
-               QStringLiteral(" cannot hold a %1 map; pass --normal or --height if the map is "
-                              "one, or choose another format")
-                   .arg(qstr(core::mapSlotLabel(slot)).toLower()));
+  job.map = std::make_shared<const core::Image>(std::move(map).value());
+  job.settings = {*format, quality, parser.isSet(QStringLiteral("mips"))};
+  job.heightScale = *heightScale;
+  job.measure = parser.isSet(QStringLiteral("metrics"));
+  if (core::Result<std::vector<std::string>> check =
+          core::checkCompression(*job.map, job.slot, *format);
+      !check) {
+    printError(QString::fromStdString(check.error()) +
+               QStringLiteral("; pass --normal or --height if the map is one, or choose another "
+                              "format"));
     return kExitUsage;
   }
-  if (const double outside = core::shareOutsideUnitRange(map.value()); outside > 0.0) {
-    printError(QStringLiteral("warning: %1: %2% of the values lie outside 0..1 and are clamped "
-                              "(GPU formats store 0..1; normalise the map first to keep them)")
-                   .arg(QString::fromStdString(inPath))
-                   .arg(outside * 100.0, 0, 'g', 3));
-  }
-  if (map->channels() >= 3 && core::isSingleChannelFormat(*format)) {
-    printError(QStringLiteral("warning: %1 has %2 channels; %3 keeps only the first (red)")
-                   .arg(QString::fromStdString(inPath))
-                   .arg(map->channels())
-                   .arg(qstr(core::textureFormatInfo(*format).label)));
-  }
-  QElapsedTimer timer;
-  timer.start();
-  core::Result<core::CompressedTexture> texture = core::compressMap(
-      map.value(), slot, {*format, quality, parser.isSet(QStringLiteral("mips"))});
-  if (!texture) {
+  core::Result<core::CompressionOutcome> outcome = core::runCompressionJob(job);
+  if (!outcome) {
     printError(QString::fromStdString(inPath) + QStringLiteral(": ") +
-               QString::fromStdString(texture.error()));
+               QString::fromStdString(outcome.error()));
     return kExitFailure;
   }
-  const double seconds = double(timer.nsecsElapsed()) * 1e-9;
-  if (core::Status saved = core::saveCompressedTexture(texture.value(), outPath); !saved) {
+  for (const std::string& warning : outcome->warnings) {
+    printError(QStringLiteral("warning: %1: %2")
+                   .arg(QString::fromStdString(inPath), QString::fromStdString(warning)));
+  }
+  const core::CompressedTexture& texture = *outcome->texture;
+  if (core::Status saved = core::saveCompressedTexture(texture, outPath); !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
   }
-  if (parser.isSet(QStringLiteral("metrics"))) {
-    core::CompressionReport report = core::makeCompressionReport(
-        map.value(), core::decodeAsMap(texture.value()).value(), slot, *heightScale);
-    report.format = *format;
-    report.size = core::measureSize(*format, map->channels(), texture->byteSize());
-    report.encodeSeconds = seconds;
+  if (job.measure) {
     if (metrics == QStringLiteral("json")) {
-      printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(report)).toJson()));
+      printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(outcome->report)).toJson()));
     } else {
-      printOut(QString::fromStdString(core::reportToText(report)));
+      printOut(QString::fromStdString(core::reportToText(outcome->report)));
     }
   } else {
     printOut(QStringLiteral("%1: %2, %3x%4, %5 level(s), %6 bytes, %7 s\n")
                  .arg(QString::fromStdString(outPath), qstr(core::textureFormatInfo(*format).label))
-                 .arg(map->width())
-                 .arg(map->height())
-                 .arg(texture->levels.size())
-                 .arg(texture->byteSize())
-                 .arg(seconds, 0, 'f', 2));
+                 .arg(job.map->width())
+                 .arg(job.map->height())
+                 .arg(texture.levels.size())
+                 .arg(texture.byteSize())
+                 .arg(outcome->report.encodeSeconds, 0, 'f', 2));
   }
   return kExitOk;
 }

@@ -2,10 +2,10 @@
 #include "ExportCommand.h"
 
 #include "CliCommon.h"
-#include "core/MaterialPreset.h"
-#include "core/export/GltfExport.h"
-#include "core/export/GodotExport.h"
-#include "core/export/PackageExport.h"
+#include "core/exporters/GltfExport.h"
+#include "core/exporters/GodotExport.h"
+#include "core/exporters/PackageExport.h"
+#include "core/material/MaterialPreset.h"
 
 namespace relief::cli {
 namespace {

@@ -2,8 +2,8 @@
 #include "GenerateCommand.h"
 
 #include "CliCommon.h"
-#include "core/ImageIO.h"
 #include "core/generators/Generators.h"
+#include "core/image/ImageIO.h"
 
 #include <QFileInfo>
 

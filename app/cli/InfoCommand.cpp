@@ -2,7 +2,7 @@
 #include "InfoCommand.h"
 
 #include "CliCommon.h"
-#include "core/ImageIO.h"
+#include "core/image/ImageIO.h"
 
 namespace relief::cli {
 

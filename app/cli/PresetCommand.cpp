@@ -2,7 +2,7 @@
 #include "PresetCommand.h"
 
 #include "CliCommon.h"
-#include "core/MaterialPreset.h"
+#include "core/material/MaterialPreset.h"
 
 namespace relief::cli {
 namespace {
@@ -88,11 +88,11 @@ int info(const QString& path) {
                 .arg(map.image->sourceBitsPerChannel())
                 .arg(qstr(core::colorSpaceName(map.image->colorSpace())));
     const core::MapCompression& compression = preset.compression[std::size_t(slot)];
-    if (!compression.format.empty()) {
+    if (compression) {
       text += QStringLiteral(" compress %1 %2%3")
-                  .arg(QString::fromStdString(compression.format),
-                       QString::fromStdString(compression.quality),
-                       compression.mipmaps ? QStringLiteral(" mipmaps") : QString());
+                  .arg(qstr(core::textureFormatInfo(compression->format).name),
+                       qstr(core::compressionQualityName(compression->quality)),
+                       compression->mipmaps ? QStringLiteral(" mipmaps") : QString());
     }
     text += QLatin1Char('\n');
   }

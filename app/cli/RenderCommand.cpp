@@ -3,13 +3,14 @@
 
 #include "../DisplayCheck.h"
 #include "CliCommon.h"
-#include "core/ImageIO.h"
-#include "core/MaterialPreset.h"
-#include "core/MeshImport.h"
-#include "core/MeshPrimitives.h"
-#include "core/UvErrorMap.h"
+#include "core/image/ImageIO.h"
+#include "core/material/MaterialPreset.h"
+#include "core/mesh/MeshImport.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/tracing/UvErrorMap.h"
 #include "renderer/ErrorView.h"
 #include "renderer/HeatmapLegend.h"
+#include "renderer/ImageConversion.h"
 #include "renderer/OffscreenRenderer.h"
 #include "renderer/OpenGLProbe.h"
 
@@ -35,7 +36,6 @@ QString parameterHelp() {
 }
 
 // The error view's colour scale in PNG output: a quarter texel and more is red.
-constexpr double kErrorDisplayTexels = 0.25;
 
 struct RenderRequest {
   core::Material material;
@@ -45,7 +45,7 @@ struct RenderRequest {
   int height = 720;
   QString outPath;
   bool exr = false;
-  core::PresetView presetView;  // the preset's camera, light and mesh, used unless overridden
+  core::ViewState presetView;  // the preset's camera, light and mesh, used unless overridden
 };
 
 bool loadMapOption(const QCommandLineParser& parser, const QString& option, core::MapSlot slot,
@@ -66,25 +66,15 @@ bool loadMapOption(const QCommandLineParser& parser, const QString& option, core
 // Paints the heat-map legend of the view (if it has one) onto an 8-bit picture.
 void addLegend(core::Image& image, const RenderRequest& request) {
   const auto legend =
-      renderer::legendFor(request.frame.debugView, request.material, kErrorDisplayTexels);
+      renderer::legendFor(request.frame.debugView, request.material, core::kErrorDisplayTexels);
   if (!legend)
     return;
-  QImage picture(image.width(), image.height(), QImage::Format_RGBA8888);
-  for (int y = 0; y < image.height(); ++y) {
-    uchar* line = picture.scanLine(y);
-    for (int i = 0; i < image.width() * 4; ++i) {
-      line[i] = uchar(std::lround(std::clamp(image.pixel(0, y)[i], 0.0f, 1.0f) * 255.0f));
-    }
-  }
+  QImage picture = renderer::toDisplayImage(image);
   {
     QPainter painter(&picture);
     renderer::drawHeatmapLegend(painter, picture.rect(), *legend);
   }
-  for (int y = 0; y < image.height(); ++y) {
-    const uchar* line = picture.constScanLine(y);
-    for (int i = 0; i < image.width() * 4; ++i)
-      image.pixel(0, y)[i] = float(line[i]) / 255.0f;
-  }
+  image = renderer::fromQImage(picture, image.colorSpace());
 }
 
 // The requested view: 8-bit display colours with a legend, or for EXR the raw values of data
@@ -126,7 +116,7 @@ core::Result<core::Image> renderErrorView(renderer::OffscreenRenderer& offscreen
                .arg(map.pixels));
   if (request.exr)
     return map.texels;
-  core::Image colors = core::colorizeErrorMap(map, kErrorDisplayTexels);
+  core::Image colors = core::colorizeErrorMap(map, core::kErrorDisplayTexels);
   // Uncovered pixels get the background of a normal render, so the picture reads as a frame.
   core::Result<core::Image> background =
       offscreen.render(request.frame.view, request.width, request.height);

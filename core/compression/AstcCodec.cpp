@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 struct ContextDeleter {
@@ -118,4 +118,4 @@ Result<Image> decodeAstc(TextureFormat format, bool srgb, const std::uint8_t* da
   return decoded;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

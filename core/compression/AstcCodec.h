@@ -4,15 +4,15 @@
 // the strips give the same bytes as one call.
 #pragma once
 
-#include "core/Image.h"
-#include "core/Result.h"
-#include "core/WorkControl.h"
+#include "core/base/Result.h"
+#include "core/base/WorkControl.h"
 #include "core/compression/TextureFormat.h"
+#include "core/image/Image.h"
 
 #include <cstdint>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 // `rgba` holds 4 channels in 0..1 (sRGB-encoded values when `srgb`).
 Result<std::vector<std::uint8_t>> encodeAstc(TextureFormat format, CompressionQuality quality,
@@ -22,4 +22,4 @@ Result<std::vector<std::uint8_t>> encodeAstc(TextureFormat format, CompressionQu
 Result<Image> decodeAstc(TextureFormat format, bool srgb, const std::uint8_t* data,
                          std::size_t size, int width, int height);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

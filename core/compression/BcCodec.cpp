@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 std::uint8_t toByte(float value) {
@@ -292,4 +292,4 @@ void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& te
   }
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

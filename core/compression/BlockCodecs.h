@@ -8,7 +8,7 @@
 
 #include <cstdint>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 using BlockTexels = float[16][4];
 
@@ -34,4 +34,4 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
 void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]);
 void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

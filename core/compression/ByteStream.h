@@ -3,7 +3,7 @@
 // zero, so a parser checks `ok()` once after reading a header.
 #pragma once
 
-#include "core/Result.h"
+#include "core/base/Result.h"
 
 #include <cstdint>
 #include <cstring>
@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 // A reader's failure, naming the file first.
 inline Error fileError(const std::string& name, const std::string& problem) {
@@ -92,4 +92,4 @@ class ByteReader {
   bool m_ok;
 };
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -1,14 +1,14 @@
 // CompressionMetrics; see CompressionMetrics.h.
 #include "core/compression/CompressionMetrics.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 double psnrOf(double mse) {
@@ -185,4 +185,4 @@ SizeFigures measureSize(TextureFormat format, int sourceChannels, std::uint64_t 
   return figures;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -4,13 +4,13 @@
 // against uncompressed texels (reference 003's 6:1 and 4:1).
 #pragma once
 
-#include "core/Image.h"
 #include "core/compression/TextureFormat.h"
+#include "core/image/Image.h"
 
 #include <cstdint>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 struct ChannelError {
   double mse = 0.0;
@@ -60,4 +60,4 @@ struct SizeFigures {
 
 SizeFigures measureSize(TextureFormat format, int sourceChannels, std::uint64_t bytesWithMips);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

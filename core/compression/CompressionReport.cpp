@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 // JSON has no infinity: an exact match reports PSNR as null.
@@ -127,4 +127,4 @@ std::string reportToText(const CompressionReport& report) {
   return text;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

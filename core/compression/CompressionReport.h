@@ -3,16 +3,16 @@
 // relief-cli's compress and compare commands and the Compress panel's tables.
 #pragma once
 
-#include "core/Image.h"
-#include "core/MapSlot.h"
 #include "core/compression/CompressionMetrics.h"
+#include "core/image/Image.h"
+#include "core/material/MapSlot.h"
 
 #include <QJsonObject>
 
 #include <optional>
 #include <string>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 struct CompressionReport {
   MapSlot slot = MapSlot::Color;
@@ -39,4 +39,4 @@ std::string headlineQualityName(MapSlot slot);
 QJsonObject reportToJson(const CompressionReport& report);
 std::string reportToText(const CompressionReport& report);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

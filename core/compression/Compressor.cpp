@@ -1,7 +1,7 @@
 // Compressor; see Compressor.h.
 #include "core/compression/Compressor.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 #include "core/compression/AstcCodec.h"
 #include "core/compression/BlockCodecs.h"
 #include "core/compression/MipChain.h"
@@ -11,12 +11,8 @@
 #include <cmath>
 #include <string>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
-
-bool isBcFamily(TextureFormat format) {
-  return format <= TextureFormat::Dxt5nm;
-}
 
 // One texel of the map as four channels in the layout the format's encoder expects.
 void prepareTexel(const float* in, int channels, bool twoChannelNormal, float* out) {
@@ -279,4 +275,4 @@ Result<Image> decodeAsMap(const CompressedTexture& texture, int levelIndex) {
   return map;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -5,22 +5,16 @@
 // are padded by repeating the edge texels, which are left out of each edge block's fit.
 #pragma once
 
-#include "core/Image.h"
-#include "core/MapSlot.h"
-#include "core/Result.h"
-#include "core/WorkControl.h"
+#include "core/base/Result.h"
+#include "core/base/WorkControl.h"
 #include "core/compression/TextureFormat.h"
+#include "core/image/Image.h"
+#include "core/material/MapSlot.h"
 
 #include <cstdint>
 #include <vector>
 
-namespace relief::core {
-
-struct CompressionSettings {
-  TextureFormat format = TextureFormat::Bc1;
-  CompressionQuality quality = CompressionQuality::Normal;
-  bool mipmaps = false;
-};
+namespace relief::core::inline compression {
 
 struct CompressedLevel {
   int width = 0;
@@ -67,4 +61,4 @@ double shareOutsideUnitRange(const Image& map);
 MapSlot likelySlot(TextureFormat format);
 int likelySourceChannels(TextureFormat format);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

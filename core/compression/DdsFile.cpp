@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 constexpr std::uint32_t kMagic = makeFourCC('D', 'D', 'S', ' ');
@@ -71,7 +71,7 @@ std::string fourCCText(std::uint32_t fourCC) {
 
 Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture) {
   const TextureFormatInfo& info = textureFormatInfo(texture.format);
-  if (info.fourCC == 0) {
+  if (!containerHolds(TextureContainer::Dds, texture.format)) {
     return makeError(std::string(info.label) +
                      " has no DDS format that common readers open; save it as .ktx2");
   }
@@ -181,4 +181,4 @@ Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
   return texture;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -1,12 +1,12 @@
 // DifferenceImage; see DifferenceImage.h.
 #include "core/compression/DifferenceImage.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 // The channels compared: one, or all the reference has that the candidate has too.
@@ -60,4 +60,4 @@ Image thresholdedDifference(const Image& reference, const Image& candidate, doub
   return out;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

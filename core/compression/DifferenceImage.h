@@ -4,11 +4,11 @@
 // isolate one channel.
 #pragma once
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 
 #include <optional>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 // `channel` empty: all channels of the reference (up to 4). The result has as many channels as
 // compared for the gain form, one for the thresholded form; values 0..1.
@@ -18,4 +18,4 @@ Image amplifiedDifference(const Image& reference, const Image& candidate, double
 Image thresholdedDifference(const Image& reference, const Image& candidate, double threshold,
                             std::optional<int> channel = std::nullopt);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <limits>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 // ETC1/ETC2 intensity modifier tables (codeword 0..7); index msb,lsb: 00 +a, 01 +b, 10 -a,
@@ -356,4 +356,4 @@ void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& t
   }
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

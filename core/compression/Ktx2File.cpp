@@ -13,7 +13,7 @@
 #include <map>
 #include <numeric>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 constexpr std::array<std::uint8_t, 12> kIdentifier = {0xAB, 'K',  'T',  'X',  ' ',  '2',
@@ -272,4 +272,4 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
   return texture;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

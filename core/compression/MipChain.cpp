@@ -3,13 +3,13 @@
 // texels is all a mip level needs.
 #include "core/compression/MipChain.h"
 
-#include "core/ColorSpace.h"
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
+#include "core/image/ColorSpace.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 // Source texels [begin, end) and their weights covering destination texel `d` when `from`
@@ -116,4 +116,4 @@ std::vector<Image> buildMipChain(const Image& image, MapSlot slot) {
   return chain;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

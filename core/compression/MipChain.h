@@ -4,12 +4,12 @@
 // renormalised; heights and other data are averaged as stored.
 #pragma once
 
-#include "core/Image.h"
-#include "core/MapSlot.h"
+#include "core/image/Image.h"
+#include "core/material/MapSlot.h"
 
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 // Level 0 is `image` itself; the last level is 1x1.
 std::vector<Image> buildMipChain(const Image& image, MapSlot slot);
@@ -19,4 +19,4 @@ Image downsampleForSlot(const Image& image, MapSlot slot);
 
 int mipLevelCount(int width, int height);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -1,13 +1,13 @@
 // Choosing the container and moving bytes to and from disk; see TextureFile.h.
 #include "core/compression/TextureFile.h"
 
-#include "core/AtomicFile.h"
+#include "core/base/AtomicFile.h"
 
 #include <algorithm>
 #include <fstream>
 #include <iterator>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 std::string lowerExtension(const std::string& path) {
@@ -30,6 +30,20 @@ std::optional<TextureContainer> containerForPath(const std::string& path) {
   if (extension == "ktx2")
     return TextureContainer::Ktx2;
   return std::nullopt;
+}
+
+bool containerHolds(TextureContainer container, TextureFormat format) {
+  // DDS by the format table's FourCC column: the formats readers open in a legacy DDS.
+  return container == TextureContainer::Ktx2 || textureFormatInfo(format).fourCC != 0;
+}
+
+TextureContainer containerFor(TextureFormat format, bool preferDds) {
+  return preferDds && containerHolds(TextureContainer::Dds, format) ? TextureContainer::Dds
+                                                                    : TextureContainer::Ktx2;
+}
+
+std::string_view containerExtension(TextureContainer container) {
+  return container == TextureContainer::Dds ? ".dds" : ".ktx2";
 }
 
 Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path) {
@@ -70,4 +84,4 @@ Result<CompressedTexture> loadCompressedTexture(const std::string& path) {
   return *container == TextureContainer::Dds ? decodeDds(bytes, path) : decodeKtx2(bytes, path);
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -11,14 +11,14 @@
 // read, and every failure names the file and what is wrong with it.
 #pragma once
 
-#include "core/Result.h"
+#include "core/base/Result.h"
 #include "core/compression/Compressor.h"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 // The largest width or height a reader accepts (GL_MAX_TEXTURE_SIZE on current GPUs is 16384
 // or 32768).
@@ -28,6 +28,13 @@ enum class TextureContainer { Dds, Ktx2 };
 
 // From the extension (.dds, .ktx2), case-insensitive.
 std::optional<TextureContainer> containerForPath(const std::string& path);
+
+// Whether a container can hold a format: KTX2 holds every format; DDS the BC family, written
+// with the legacy FourCC codes common readers open.
+bool containerHolds(TextureContainer container, TextureFormat format);
+// The container a format is written in when the user prefers DDS where it can hold it.
+TextureContainer containerFor(TextureFormat format, bool preferDds);
+std::string_view containerExtension(TextureContainer container);  // ".dds", ".ktx2"
 
 // The file's bytes; `name` appears in error messages.
 Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture);
@@ -42,4 +49,4 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
 Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path);
 Result<CompressedTexture> loadCompressedTexture(const std::string& path);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

@@ -6,39 +6,51 @@
 
 #include <array>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 namespace {
 
 constexpr std::array<TextureFormatInfo, 15> kFormats = {{
-    {TextureFormat::Bc1, "bc1", "BC1 (DXT1)", 4, 4, 8, FormatLayout::Rgb, 131, 132,
-     makeFourCC('D', 'X', 'T', '1'), 0x83F0, 0x8C4C},
-    {TextureFormat::Bc2, "bc2", "BC2 (DXT3)", 4, 4, 16, FormatLayout::Rgba, 135, 136,
-     makeFourCC('D', 'X', 'T', '3'), 0x83F2, 0x8C4E},
-    {TextureFormat::Bc3, "bc3", "BC3 (DXT5)", 4, 4, 16, FormatLayout::Rgba, 137, 138,
-     makeFourCC('D', 'X', 'T', '5'), 0x83F3, 0x8C4F},
-    {TextureFormat::Bc4, "bc4", "BC4 (ATI1)", 4, 4, 8, FormatLayout::R, 139, 0,
-     makeFourCC('A', 'T', 'I', '1'), 0x8DBB, 0},
-    {TextureFormat::Bc5, "bc5", "BC5 (ATI2, 3Dc)", 4, 4, 16, FormatLayout::NormalRg, 141, 0,
-     makeFourCC('A', 'T', 'I', '2'), 0x8DBD, 0},
-    {TextureFormat::Dxt5nm, "dxt5nm", "DXT5nm (normal in AG)", 4, 4, 16, FormatLayout::NormalAg,
-     137, 0, makeFourCC('D', 'X', 'T', '5'), 0x83F3, 0},
-    {TextureFormat::Etc1, "etc1", "ETC1", 4, 4, 8, FormatLayout::Rgb, 147, 148, 0, 0x9274, 0x9275},
-    {TextureFormat::Etc2, "etc2", "ETC2 RGB", 4, 4, 8, FormatLayout::Rgb, 147, 148, 0, 0x9274,
-     0x9275},
-    {TextureFormat::Etc2A, "etc2a", "ETC2 RGBA", 4, 4, 16, FormatLayout::Rgba, 151, 152, 0, 0x9278,
-     0x9279},
-    {TextureFormat::EacR11, "eac-r11", "EAC R11", 4, 4, 8, FormatLayout::R, 153, 0, 0, 0x9270, 0},
-    {TextureFormat::EacRg11, "eac-rg11", "EAC RG11", 4, 4, 16, FormatLayout::NormalRg, 155, 0, 0,
-     0x9272, 0},
-    {TextureFormat::Astc4x4, "astc4x4", "ASTC 4x4", 4, 4, 16, FormatLayout::Rgba, 157, 158, 0,
-     0x93B0, 0x93D0},
-    {TextureFormat::Astc5x5, "astc5x5", "ASTC 5x5", 5, 5, 16, FormatLayout::Rgba, 161, 162, 0,
-     0x93B2, 0x93D2},
-    {TextureFormat::Astc6x6, "astc6x6", "ASTC 6x6", 6, 6, 16, FormatLayout::Rgba, 165, 166, 0,
-     0x93B4, 0x93D4},
-    {TextureFormat::Astc8x8, "astc8x8", "ASTC 8x8", 8, 8, 16, FormatLayout::Rgba, 171, 172, 0,
-     0x93B7, 0x93D7},
+    {TextureFormat::Bc1, "bc1", "BC1 (DXT1)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 8,
+     FormatLayout::Rgb, 131, 132, makeFourCC('D', 'X', 'T', '1'), 0x83F0, 0x8C4C},
+    {TextureFormat::Bc2, "bc2", "BC2 (DXT3)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 16,
+     FormatLayout::Rgba, 135, 136, makeFourCC('D', 'X', 'T', '3'), 0x83F2, 0x8C4E},
+    {TextureFormat::Bc3, "bc3", "BC3 (DXT5)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 16,
+     FormatLayout::Rgba, 137, 138, makeFourCC('D', 'X', 'T', '5'), 0x83F3, 0x8C4F},
+    {TextureFormat::Bc4, "bc4", "BC4 (ATI1)", FormatFamily::Bc, GpuFeature::Rgtc, 4, 4, 8,
+     FormatLayout::R, 139, 0, makeFourCC('A', 'T', 'I', '1'), 0x8DBB, 0},
+    {TextureFormat::Bc5, "bc5", "BC5 (ATI2, 3Dc)", FormatFamily::Bc, GpuFeature::Rgtc, 4, 4, 16,
+     FormatLayout::NormalRg, 141, 0, makeFourCC('A', 'T', 'I', '2'), 0x8DBD, 0},
+    {TextureFormat::Dxt5nm, "dxt5nm", "DXT5nm (normal in AG)", FormatFamily::Bc, GpuFeature::S3tc,
+     4, 4, 16, FormatLayout::NormalAg, 137, 0, makeFourCC('D', 'X', 'T', '5'), 0x83F3, 0},
+    {TextureFormat::Etc1, "etc1", "ETC1", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
+     FormatLayout::Rgb, 147, 148, 0, 0x9274, 0x9275},
+    {TextureFormat::Etc2, "etc2", "ETC2 RGB", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
+     FormatLayout::Rgb, 147, 148, 0, 0x9274, 0x9275},
+    {TextureFormat::Etc2A, "etc2a", "ETC2 RGBA", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 16,
+     FormatLayout::Rgba, 151, 152, 0, 0x9278, 0x9279},
+    {TextureFormat::EacR11, "eac-r11", "EAC R11", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
+     FormatLayout::R, 153, 0, 0, 0x9270, 0},
+    {TextureFormat::EacRg11, "eac-rg11", "EAC RG11", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4,
+     16, FormatLayout::NormalRg, 155, 0, 0, 0x9272, 0},
+    {TextureFormat::Astc4x4, "astc4x4", "ASTC 4x4", FormatFamily::Astc, GpuFeature::AstcLdr, 4, 4,
+     16, FormatLayout::Rgba, 157, 158, 0, 0x93B0, 0x93D0},
+    {TextureFormat::Astc5x5, "astc5x5", "ASTC 5x5", FormatFamily::Astc, GpuFeature::AstcLdr, 5, 5,
+     16, FormatLayout::Rgba, 161, 162, 0, 0x93B2, 0x93D2},
+    {TextureFormat::Astc6x6, "astc6x6", "ASTC 6x6", FormatFamily::Astc, GpuFeature::AstcLdr, 6, 6,
+     16, FormatLayout::Rgba, 165, 166, 0, 0x93B4, 0x93D4},
+    {TextureFormat::Astc8x8, "astc8x8", "ASTC 8x8", FormatFamily::Astc, GpuFeature::AstcLdr, 8, 8,
+     16, FormatLayout::Rgba, 171, 172, 0, 0x93B7, 0x93D7},
 }};
+
+// textureFormatInfo indexes the table by the enum: each row must sit at its enum's position.
+constexpr bool rowsInEnumOrder() {
+  for (std::size_t i = 0; i < kFormats.size(); ++i) {
+    if (std::size_t(kFormats[i].format) != i)
+      return false;
+  }
+  return true;
+}
+static_assert(rowsInEnumOrder(), "kFormats rows must follow the TextureFormat enum's order");
 
 }  // namespace
 
@@ -94,7 +106,11 @@ bool isSingleChannelFormat(TextureFormat format) {
 }
 
 bool isAstc(TextureFormat format) {
-  return format >= TextureFormat::Astc4x4;
+  return textureFormatInfo(format).family == FormatFamily::Astc;
 }
 
-}  // namespace relief::core
+bool isBcFamily(TextureFormat format) {
+  return textureFormatInfo(format).family == FormatFamily::Bc;
+}
+
+}  // namespace relief::core::inline compression

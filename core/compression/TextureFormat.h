@@ -1,6 +1,8 @@
 // The GPU block-compression formats Relief encodes, decodes and writes (reference 003, ch. 2):
 // S3TC/BC1-BC3, RGTC/BC4-BC5 (3Dc), DXT5nm, ETC1/ETC2/EAC and ASTC LDR. One table says, for
-// each, its block size, what its channels hold, and its codes in the file formats and in GL.
+// each, its name, family, block size, what its channels hold, and its codes in the file formats
+// and in GL; everything else (the codec dispatch, the containers, the renderer's feature checks,
+// preset parsing) reads these columns. Adding a format is one row here plus its codec.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +10,7 @@
 #include <span>
 #include <string_view>
 
-namespace relief::core {
+namespace relief::core::inline compression {
 
 enum class TextureFormat {
   Bc1,      // DXT1: RGB 5:6:5 endpoints, 2-bit indices (alpha 1)
@@ -39,10 +41,19 @@ enum class FormatLayout {
 
 enum class CompressionQuality { Fast, Normal, Best };
 
+// Which codec family encodes and decodes a format (BlockCodecs.h, AstcCodec.h).
+enum class FormatFamily { Bc, Etc, Astc };
+
+// What a GL driver must offer to sample a format natively; the renderer turns it into the
+// extension or version check (renderer/CompressedUpload.cpp).
+enum class GpuFeature { S3tc, Rgtc, Etc2Eac, AstcLdr };
+
 struct TextureFormatInfo {
   TextureFormat format;
   std::string_view name;   // "bc1", as the CLI and presets spell it
   std::string_view label;  // "BC1 (DXT1)"
+  FormatFamily family;
+  GpuFeature gpuFeature;
   int blockWidth;
   int blockHeight;
   int bytesPerBlock;
@@ -50,11 +61,22 @@ struct TextureFormatInfo {
   // KTX2 vkFormat (UNORM; the sRGB variant is srgbVkFormat, 0 when there is none).
   std::uint32_t vkFormat;
   std::uint32_t srgbVkFormat;
-  // DDS legacy FourCC, 0 when the format has no DDS representation.
+  // DDS legacy FourCC, 0 when the format has no DDS representation that common readers open
+  // (then only KTX2 holds it: containerHolds in TextureFile.h).
   std::uint32_t fourCC;
   // OpenGL internal formats (sRGB 0 when none).
   std::uint32_t glFormat;
   std::uint32_t glSrgbFormat;
+};
+
+// A compression choice: what a map is compressed into. Presets store one per map slot (parsed
+// once when read), the CLI builds one from its options, the Compress panel from its rows.
+struct CompressionSettings {
+  TextureFormat format = TextureFormat::Bc1;
+  CompressionQuality quality = CompressionQuality::Normal;
+  bool mipmaps = false;
+
+  bool operator==(const CompressionSettings&) const = default;
 };
 
 std::span<const TextureFormatInfo> allTextureFormats();
@@ -67,10 +89,11 @@ double bitsPerPixel(TextureFormat format);
 bool isTwoChannelNormalFormat(TextureFormat format);  // BC5, DXT5nm, EAC RG11
 bool isSingleChannelFormat(TextureFormat format);     // BC4, EAC R11
 bool isAstc(TextureFormat format);
+bool isBcFamily(TextureFormat format);
 
 constexpr std::uint32_t makeFourCC(char a, char b, char c, char d) {
   return std::uint32_t(std::uint8_t(a)) | std::uint32_t(std::uint8_t(b)) << 8 |
          std::uint32_t(std::uint8_t(c)) << 16 | std::uint32_t(std::uint8_t(d)) << 24;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline compression

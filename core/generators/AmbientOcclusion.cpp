@@ -1,14 +1,14 @@
 // AmbientOcclusion; see AmbientOcclusion.h.
 #include "core/generators/AmbientOcclusion.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 Image ambientOcclusionFromHeight(const Image& height, const AmbientOcclusionOptions& options,
                                  const WorkControl& control) {
@@ -86,4 +86,4 @@ Image ambientOcclusionFromHeight(const Image& height, const AmbientOcclusionOpti
   return occlusion;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

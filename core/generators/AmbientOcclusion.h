@@ -4,11 +4,11 @@
 // occlusion); a pit sees high horizons all around.
 #pragma once
 
-#include "core/Image.h"
-#include "core/WorkControl.h"
+#include "core/base/WorkControl.h"
 #include "core/generators/ImageFilters.h"
+#include "core/image/Image.h"
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 struct AmbientOcclusionOptions {
   int directions = 16;
@@ -23,4 +23,4 @@ struct AmbientOcclusionOptions {
 Image ambientOcclusionFromHeight(const Image& height, const AmbientOcclusionOptions& options,
                                  const WorkControl& control = {});
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <sstream>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 LevelsRange autoLevels(Image& height) {
   LevelsRange range{1e300, -1e300};
@@ -108,4 +108,4 @@ Result<Image> swizzleChannels(const std::vector<const Image*>& inputs, const std
   return result;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

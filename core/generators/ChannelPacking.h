@@ -3,13 +3,13 @@
 // applied range recorded so the material's height scale can compensate.
 #pragma once
 
-#include "core/Image.h"
-#include "core/Result.h"
+#include "core/base/Result.h"
+#include "core/image/Image.h"
 
 #include <string>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 struct LevelsRange {
   double low = 0.0;   // input value mapped to 0
@@ -38,4 +38,4 @@ Image packHeightIntoNormalAlpha(const Image& normals, const Image& height);
 Result<Image> swizzleChannels(const std::vector<const Image*>& inputs, const std::string& names,
                               const std::string& swizzle);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

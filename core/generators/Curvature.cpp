@@ -1,11 +1,11 @@
 // Curvature; see Curvature.h.
 #include "core/generators/Curvature.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <algorithm>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 Image curvatureMap(const Image& source, const CurvatureOptions& options,
                    const WorkControl& control) {
@@ -54,4 +54,4 @@ Image curvatureMap(const Image& source, const CurvatureOptions& options,
   return curvature;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

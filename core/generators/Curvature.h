@@ -4,12 +4,12 @@
 // for edge wear and cavity dirt.
 #pragma once
 
-#include "core/Image.h"
-#include "core/WorkControl.h"
+#include "core/base/WorkControl.h"
 #include "core/generators/ImageFilters.h"
 #include "core/generators/NormalFromHeight.h"
+#include "core/image/Image.h"
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 enum class CurvatureSource { Height, Normal };
 
@@ -25,4 +25,4 @@ struct CurvatureOptions {
 Image curvatureMap(const Image& source, const CurvatureOptions& options,
                    const WorkControl& control = {});
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 namespace {
 
 OptionSpec edgeOption(int defaultValue) {
@@ -317,4 +317,4 @@ std::optional<std::string> normalMapWarning(const Image& image) {
       100.0 * share);
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -4,12 +4,12 @@
 // in the files next to this one.
 #pragma once
 
-#include "core/Image.h"
-#include "core/MapSlot.h"
-#include "core/OptionSpec.h"
-#include "core/Result.h"
-#include "core/WorkControl.h"
+#include "core/base/OptionSpec.h"
+#include "core/base/Result.h"
+#include "core/base/WorkControl.h"
 #include "core/generators/ChannelPacking.h"
+#include "core/image/Image.h"
+#include "core/material/MapSlot.h"
 
 #include <optional>
 #include <span>
@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 enum class GeneratorKind {
   Normal,            // normal from height
@@ -77,4 +77,4 @@ Result<GeneratedMap> runGenerator(const GeneratorRequest& request, const WorkCon
 // many texels whose decoded vector is far from unit length or points into the surface.
 std::optional<std::string> normalMapWarning(const Image& image);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -1,11 +1,11 @@
 // HeightFromColor; see HeightFromColor.h.
 #include "core/generators/HeightFromColor.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <algorithm>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 Image heightFromColor(const Image& color, const HeightFromColorOptions& options,
                       const WorkControl& control) {
@@ -32,4 +32,4 @@ Image heightFromColor(const Image& color, const HeightFromColorOptions& options,
   return height;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -4,11 +4,11 @@
 // then refine.
 #pragma once
 
-#include "core/Image.h"
-#include "core/WorkControl.h"
+#include "core/base/WorkControl.h"
 #include "core/generators/ImageFilters.h"
+#include "core/image/Image.h"
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 struct HeightFromColorOptions {
   double highPassRadius = 64.0;  // texels (Gaussian sigma); 0 keeps the large scale
@@ -23,4 +23,4 @@ struct HeightFromColorOptions {
 Image heightFromColor(const Image& color, const HeightFromColorOptions& options,
                       const WorkControl& control = {});
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

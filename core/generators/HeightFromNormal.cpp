@@ -1,7 +1,7 @@
 // HeightFromNormal; see HeightFromNormal.h.
 #include "core/generators/HeightFromNormal.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <fftw3.h>
 
@@ -13,7 +13,7 @@
 #include <mutex>
 #include <numbers>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 namespace {
 
 // FFTW's planner is not thread-safe; execution of distinct plans is.
@@ -156,4 +156,4 @@ Result<HeightFromNormalResult> heightFromNormal(const Image& normals,
   return result;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

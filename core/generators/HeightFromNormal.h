@@ -5,13 +5,13 @@
 // are mirror-padded to twice their size first so no slope wraps around.
 #pragma once
 
-#include "core/Image.h"
-#include "core/Result.h"
-#include "core/WorkControl.h"
+#include "core/base/Result.h"
+#include "core/base/WorkControl.h"
 #include "core/generators/ImageFilters.h"
 #include "core/generators/NormalFromHeight.h"
+#include "core/image/Image.h"
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 struct HeightFromNormalOptions {
   NormalConvention convention = NormalConvention::OpenGl;  // of the input
@@ -28,4 +28,4 @@ Result<HeightFromNormalResult> heightFromNormal(const Image& normals,
                                                 const HeightFromNormalOptions& options,
                                                 const WorkControl& control = {});
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -1,7 +1,7 @@
 // ImageFilters; see ImageFilters.h.
 #include "core/generators/ImageFilters.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 std::vector<int> edgeIndexTable(int size, int margin, EdgeMode edge) {
   std::vector<int> table(std::size_t(size + 2 * margin));
@@ -97,4 +97,4 @@ Image resizeImage(const Image& image, int width, int height) {
   return result;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -2,12 +2,12 @@
 // resizing for previews.
 #pragma once
 
-#include "core/Image.h"
-#include "core/WorkControl.h"
+#include "core/base/WorkControl.h"
+#include "core/image/Image.h"
 
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 enum class EdgeMode { Wrap, Clamp };
 
@@ -35,4 +35,4 @@ Image luminance(const Image& image);
 // Resized with OpenImageIO's ImageBufAlgo::resize (a good filter for both directions).
 Image resizeImage(const Image& image, int width, int height);
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

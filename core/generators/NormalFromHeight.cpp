@@ -1,13 +1,13 @@
 // NormalFromHeight; see NormalFromHeight.h.
 #include "core/generators/NormalFromHeight.h"
 
-#include "core/ParallelFor.h"
+#include "core/base/ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 namespace {
 
 // A single-channel view of the first channel, contiguous (copied only when needed).
@@ -174,4 +174,4 @@ Image normalMapFromHeight(const Image& height, const NormalFromHeightOptions& op
   return normals;
 }
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

@@ -4,13 +4,13 @@
 // one of four kernels, optionally mixed over several blur levels (multi-scale detail).
 #pragma once
 
-#include "core/Image.h"
-#include "core/WorkControl.h"
+#include "core/base/WorkControl.h"
 #include "core/generators/ImageFilters.h"
+#include "core/image/Image.h"
 
 #include <array>
 
-namespace relief::core {
+namespace relief::core::inline generators {
 
 enum class GradientKernel {
   Central,  // (h[x+1] - h[x-1]) / 2: sharpest, most sensitive to noise
@@ -53,4 +53,4 @@ Image normalMapFromHeight(const Image& height, const NormalFromHeightOptions& op
 Image heightGradient(const Image& height, GradientKernel kernel, EdgeMode edge,
                      const WorkControl& control = {});
 
-}  // namespace relief::core
+}  // namespace relief::core::inline generators

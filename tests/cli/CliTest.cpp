@@ -1,6 +1,6 @@
 // relief-cli as a user runs it: on the samples, and on bad input (each must be a clear error
 // naming the file, a non-zero exit and no crash). `render` runs under the test's X display.
-#include "core/ImageIO.h"
+#include "core/image/ImageIO.h"
 #include "support/ImageCompare.h"
 #include "support/TestPaths.h"
 

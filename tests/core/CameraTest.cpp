@@ -1,6 +1,6 @@
 // Camera framing: after frame(), every corner of the mesh's bounds projects inside the view.
-#include "core/MeshPrimitives.h"
-#include "core/OrbitCamera.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/view/OrbitCamera.h"
 
 #include <gtest/gtest.h>
 

@@ -3,13 +3,13 @@
 // odd sizes, mip chains, cancel, the metrics against closed-form values, and quality floors
 // measured on the sample maps. That our decoders agree with a GPU is the render test
 // CompressedSamplingTest's job.
-#include "core/ImageIO.h"
 #include "core/compression/BlockCodecs.h"
 #include "core/compression/CompressionMetrics.h"
 #include "core/compression/Compressor.h"
 #include "core/compression/DifferenceImage.h"
 #include "core/compression/MipChain.h"
 #include "core/compression/TextureFormat.h"
+#include "core/image/ImageIO.h"
 #include "support/TestPaths.h"
 
 #include <squish.h>

@@ -2,14 +2,14 @@
 // against the glTF 2.0 specification and passed through the Khronos validator; the Godot
 // .tres is parsed back and its heightmap settings checked against the offset Godot 4's
 // generated shader computes (docs/export.md).
-#include "core/ImageIO.h"
-#include "core/MaterialPreset.h"
-#include "core/MeshPrimitives.h"
 #include "core/compression/TextureFile.h"
-#include "core/export/EngineConversion.h"
-#include "core/export/GltfExport.h"
-#include "core/export/GodotExport.h"
-#include "core/export/PackageExport.h"
+#include "core/exporters/EngineConversion.h"
+#include "core/exporters/GltfExport.h"
+#include "core/exporters/GodotExport.h"
+#include "core/exporters/PackageExport.h"
+#include "core/image/ImageIO.h"
+#include "core/material/MaterialPreset.h"
+#include "core/mesh/MeshPrimitives.h"
 #include "support/GltfValidator.h"
 #include "support/TestPaths.h"
 
@@ -139,9 +139,12 @@ TEST(PackageExport, ReloadsAsTheSameMaterial) {
 
 TEST(PackageExport, MapsWithACompressionChoiceAreAlsoWrittenCompressed) {
   Preset preset = syntheticPreset();
-  preset.compression[std::size_t(MapSlot::Color)] = {"astc6x6", "fast", true};
-  preset.compression[std::size_t(MapSlot::Normal)] = {"bc5", "normal", true};
-  preset.compression[std::size_t(MapSlot::Height)] = {"bc4", "normal", false};
+  preset.compression[std::size_t(MapSlot::Color)] =
+      CompressionSettings{TextureFormat::Astc6x6, CompressionQuality::Fast, true};
+  preset.compression[std::size_t(MapSlot::Normal)] =
+      CompressionSettings{TextureFormat::Bc5, CompressionQuality::Normal, true};
+  preset.compression[std::size_t(MapSlot::Height)] =
+      CompressionSettings{TextureFormat::Bc4, CompressionQuality::Normal, false};
   for (PackageTextures textures : {PackageTextures::Ktx2, PackageTextures::DdsWherePossible}) {
     const std::string folder = freshFolder("compressed" + std::to_string(int(textures)));
     ASSERT_TRUE(exportPackage(preset, folder, {PackageMapFormat::Png16, textures}).ok());

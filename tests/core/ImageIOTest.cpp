@@ -1,5 +1,5 @@
 // Image files: exact round trips for the lossless precisions, bounded reads of hostile files.
-#include "core/ImageIO.h"
+#include "core/image/ImageIO.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Assigning dropped files to map slots by the hints in their names.
-#include "core/MapSlot.h"
+#include "core/material/MapSlot.h"
 
 #include <gtest/gtest.h>
 

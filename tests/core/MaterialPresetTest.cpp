@@ -2,8 +2,8 @@
 // program does not know; bad files are refused or reported with the file's name; version 1
 // migrates; a failed save leaves the old file byte for byte; maps made in the editor are
 // written beside the preset.
-#include "core/ImageIO.h"
-#include "core/MaterialPreset.h"
+#include "core/image/ImageIO.h"
+#include "core/material/MaterialPreset.h"
 #include "support/TestPaths.h"
 
 #include <QJsonDocument>
@@ -61,7 +61,8 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   preset.material.setParameter(ParamId::Tiling, 3.25);
   preset.material.setParameter(ParamId::NormalYDown, 1.0);
   preset.material.setParameter(ParamId::ShadowMode, double(ShadowMode::Hard));
-  preset.compression[std::size_t(MapSlot::Normal)] = {"bc5", "best", false};
+  preset.compression[std::size_t(MapSlot::Normal)] =
+      CompressionSettings{TextureFormat::Bc5, CompressionQuality::Best, false};
   OrbitCamera camera;
   camera.yawDeg = -40.0f;
   camera.target = glm::vec3(0.1f, 0.2f, 0.3f);
@@ -276,15 +277,17 @@ TEST(MaterialPreset, TheDocumentedExampleLoadsWithoutWarnings) {
     ADD_FAILURE() << warning;
   const Preset& preset = loaded->preset;
   EXPECT_EQ(preset.material.technique(), Technique::Pom);
-  EXPECT_EQ(preset.compression[std::size_t(MapSlot::Normal)].format, "bc5");
+  ASSERT_TRUE(preset.compression[std::size_t(MapSlot::Normal)].has_value());
+  EXPECT_EQ(preset.compression[std::size_t(MapSlot::Normal)]->format, TextureFormat::Bc5);
   ASSERT_TRUE(preset.view.light.has_value());
   EXPECT_FLOAT_EQ(preset.view.light->color.g, 0.97f);
   // Every parameter core declares is in the example, so the page cannot fall behind.
   for (const ParameterSpec& spec : allParameters()) {
     EXPECT_NE(doc.find("\"" + std::string(spec.name) + "\""), std::string::npos) << spec.name;
   }
-  for (std::string_view format : compressionFormatNames())
-    EXPECT_NE(doc.find("`" + std::string(format) + "`"), std::string::npos) << format;
+  for (const TextureFormatInfo& format : allTextureFormats()) {
+    EXPECT_NE(doc.find("`" + std::string(format.name) + "`"), std::string::npos) << format.name;
+  }
 }
 
 }  // namespace

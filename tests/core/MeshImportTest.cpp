@@ -1,6 +1,6 @@
 // Meshes from files: UVs required, tangents from the file kept (with their handedness), or
 // computed after reference 004 when the file has none; clear errors for bad files.
-#include "core/MeshImport.h"
+#include "core/mesh/MeshImport.h"
 #include "support/TestPaths.h"
 
 #include <QByteArray>

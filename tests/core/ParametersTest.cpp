@@ -1,12 +1,17 @@
 // The parameter table: unique names, sane ranges, and parsing as the CLI's --set does it.
-#include "core/Material.h"
-#include "core/Parameters.h"
+#include "core/material/Material.h"
+#include "core/material/Parameters.h"
+#include "support/TestPaths.h"
+
+#include <QRegularExpression>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <set>
+#include <sstream>
 
 namespace relief::core {
 namespace {
@@ -25,6 +30,52 @@ TEST(Parameters, TableIsConsistent) {
     EXPECT_EQ(findParameter(spec.name), spec.id);
   }
   EXPECT_EQ(allParameters().size(), kParamCount);
+}
+
+// The renderer sets each parameter's uniform from the table, by kind; a name or type that the
+// shader does not declare would be dropped silently by GL, so the table is checked against the
+// shader source here.
+TEST(Parameters, EveryUniformInTheTableIsDeclaredInTheShaderWithItsType) {
+  std::ifstream file(test::sourcePath("shaders/include/material_inputs.glsl"));
+  ASSERT_TRUE(file) << "material_inputs.glsl not found";
+  std::stringstream source;
+  source << file.rdbuf();
+  const std::string text = source.str();
+  int withUniform = 0;
+  for (const ParameterSpec& spec : allParameters()) {
+    if (spec.uniform.empty()) {
+      // Shader-variant switches: choices and flags the renderer turns into #defines.
+      EXPECT_TRUE(spec.kind == ParamKind::Choice || spec.kind == ParamKind::Bool) << spec.name;
+      continue;
+    }
+    ++withUniform;
+    const char* type = spec.kind == ParamKind::Float  ? "float"
+                       : spec.kind == ParamKind::Bool ? "bool"
+                                                      : "int";
+    // QRegularExpression: GCC 12 warns falsely inside std::regex at -O2.
+    const QRegularExpression declaration(
+        QStringLiteral("uniform\\s+%1\\s+%2\\s*;")
+            .arg(QLatin1String(type))
+            .arg(QString::fromUtf8(spec.uniform.data(), qsizetype(spec.uniform.size()))));
+    EXPECT_TRUE(declaration.match(QString::fromStdString(text)).hasMatch())
+        << spec.name << ": no 'uniform " << type << " " << spec.uniform << ";'";
+  }
+  EXPECT_GE(withUniform, 15);
+}
+
+TEST(Parameters, UseFollowsTechniqueAndShadowMode) {
+  const auto inUse = [](ParamId id, Technique technique, ShadowMode shadows) {
+    return parameterInUse(parameterSpec(id), technique, shadows);
+  };
+  EXPECT_FALSE(inUse(ParamId::MinSamples, Technique::Parallax, ShadowMode::Soft));
+  EXPECT_TRUE(inUse(ParamId::MaxSamples, Technique::Pom, ShadowMode::Off));
+  EXPECT_TRUE(inUse(ParamId::RefinementSteps, Technique::Relief, ShadowMode::Off));
+  EXPECT_FALSE(inUse(ParamId::RefinementSteps, Technique::Pom, ShadowMode::Off));
+  EXPECT_FALSE(inUse(ParamId::ShadowSamples, Technique::Pom, ShadowMode::Off));
+  EXPECT_TRUE(inUse(ParamId::ShadowSamples, Technique::Pom, ShadowMode::Hard));
+  EXPECT_FALSE(inUse(ParamId::ShadowSoftness, Technique::Pom, ShadowMode::Hard));
+  EXPECT_TRUE(inUse(ParamId::ShadowSoftness, Technique::Relief, ShadowMode::Soft));
+  EXPECT_TRUE(inUse(ParamId::HeightScale, Technique::Normal, ShadowMode::Off));
 }
 
 TEST(Parameters, ParsesNumbersAndBooleansAndRejectsNonsense) {

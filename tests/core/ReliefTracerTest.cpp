@@ -1,6 +1,6 @@
 // The exact reference tracer against closed-form answers (flat and tilted fields), against an
 // independent brute-force search on a random field, and for shadow rays beside a tall box.
-#include "core/ReliefTracer.h"
+#include "core/tracing/ReliefTracer.h"
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>

@@ -1,7 +1,7 @@
 // Tangent frames after reference 004: orthonormal, aligned with the UV derivatives, with the
 // handedness that makes B = cross(N, T) * w point along +v, also where UVs are mirrored.
-#include "core/MeshPrimitives.h"
-#include "core/TangentFrames.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/mesh/TangentFrames.h"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 // V), mip levels, sRGB, DXT5nm's swizzle and the shader's Z rebuild for two-channel normals
 // (reference 003, eq. 2.1). And compression must visibly change the picture for a coarse format,
 // so the comparison is not between two copies of the original.
-#include "core/MaterialPreset.h"
-#include "core/MeshPrimitives.h"
 #include "core/compression/Compressor.h"
+#include "core/material/MaterialPreset.h"
+#include "core/mesh/MeshPrimitives.h"
 #include "support/ImageCompare.h"
 #include "support/OffscreenFixture.h"
 #include "support/TestPaths.h"

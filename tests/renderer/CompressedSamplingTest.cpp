@@ -4,10 +4,10 @@
 // every block mode a format has (BC1's three-colour mode, BC4's six-value mode, ETC2's T, H and
 // planar modes, every EAC table); ASTC, where random bytes are mostly illegal blocks, uses
 // astcenc's encoding of a real map.
-#include "core/ColorSpace.h"
-#include "core/ImageIO.h"
 #include "core/compression/AstcCodec.h"
 #include "core/compression/Compressor.h"
+#include "core/image/ColorSpace.h"
+#include "core/image/ImageIO.h"
 #include "renderer/CompressedUpload.h"
 #include "renderer/OpenGLProbe.h"
 #include "support/TestPaths.h"

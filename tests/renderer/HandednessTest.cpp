@@ -1,7 +1,7 @@
 // Mirrored UVs (reference 004's tangent.w): on a plane whose right half has u mirrored, the
 // parallax offset must point away from the viewer in world space on both halves, so it has
 // opposite signs in u and the same sign in v.
-#include "core/TangentFrames.h"
+#include "core/mesh/TangentFrames.h"
 #include "support/OffscreenFixture.h"
 
 namespace relief::test {

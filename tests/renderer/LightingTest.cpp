@@ -3,8 +3,8 @@
 // albedo * dot(N, L) per pixel. This pins down the tangent frame's orientation (the normal
 // map's X and Y point the right way, with the OpenGL Y+ convention), the sRGB decode of the
 // colour map and the sRGB encode of the output.
-#include "core/ColorSpace.h"
-#include "core/MeshPrimitives.h"
+#include "core/image/ColorSpace.h"
+#include "core/mesh/MeshPrimitives.h"
 #include "support/OffscreenFixture.h"
 
 #include <cmath>

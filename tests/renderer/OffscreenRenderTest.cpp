@@ -1,6 +1,6 @@
 // Offscreen rendering: any size up to the GPU's limit, refusal beyond it, and the same picture
 // for the same inputs.
-#include "core/MeshPrimitives.h"
+#include "core/mesh/MeshPrimitives.h"
 #include "support/ImageCompare.h"
 #include "support/OffscreenFixture.h"
 

@@ -12,9 +12,9 @@
 // smooth field, 0.020 on the steps; relief (8/16, 5 steps) 0.001 and 0.017. The bounds below
 // leave 5-8x headroom; the additive 0.01 texel covers GPUs that filter with 8-bit weights
 // (1/256 texel).
-#include "core/MeshPrimitives.h"
-#include "core/ReliefTracer.h"
-#include "core/UvErrorMap.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/tracing/ReliefTracer.h"
+#include "core/tracing/UvErrorMap.h"
 #include "support/OffscreenFixture.h"
 
 #include <cmath>

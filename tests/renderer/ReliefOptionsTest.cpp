@@ -1,7 +1,7 @@
 // The mapping options against what they promise: depthOffset writes the depth of the displaced
 // surface (exactly, on a flat sunken field), uvEdge clamp discards what is displaced outside
 // the mesh's UV range, lodFade removes the relief beyond its mip level.
-#include "core/MeshPrimitives.h"
+#include "core/mesh/MeshPrimitives.h"
 #include "support/OffscreenFixture.h"
 
 #include <cmath>

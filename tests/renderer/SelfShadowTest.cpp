@@ -1,8 +1,8 @@
 // Self-shadowing (reference 003, 1.3): a tall box casts its shadow away from the light and
 // none toward it, hard shadows agree with the exact shadow ray of the reference tracer, and
 // strength 0 is the same picture as shadows off.
-#include "core/MeshPrimitives.h"
-#include "core/ReliefTracer.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/tracing/ReliefTracer.h"
 #include "support/ImageCompare.h"
 #include "support/OffscreenFixture.h"
 

@@ -2,7 +2,7 @@
 #include "ImageCompare.h"
 
 #include "TestPaths.h"
-#include "core/ImageIO.h"
+#include "core/image/ImageIO.h"
 
 #include <algorithm>
 #include <cmath>

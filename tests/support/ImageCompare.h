@@ -2,7 +2,7 @@
 // baseline check that writes the actual and a difference image when it fails.
 #pragma once
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 
 #include <gtest/gtest.h>
 

@@ -4,13 +4,13 @@
 // material and the earlier results as they were, the 2D compare view is texel-exact when
 // zoomed, and "compare all formats" fills its table and chart and hands a format back.
 #include "support/TestPaths.h"
-#include "ui/CompareAllDialog.h"
-#include "ui/CompareDialog.h"
-#include "ui/CompareView.h"
-#include "ui/CompressPanel.h"
-#include "ui/MainWindow.h"
-#include "ui/MaterialDocument.h"
-#include "ui/ViewportWidget.h"
+#include "ui/compare/CompareAllDialog.h"
+#include "ui/compare/CompareDialog.h"
+#include "ui/compare/CompareView.h"
+#include "ui/document/MaterialDocument.h"
+#include "ui/panels/CompressPanel.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/window/MainWindow.h"
 
 #include <QChartView>
 #include <QComboBox>
@@ -74,8 +74,10 @@ TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks)
   choose(MapSlot::Normal, TextureFormat::Bc5);
   choose(MapSlot::Height, TextureFormat::Bc4);
   // The choices are document state: saved with the preset, undoable.
-  EXPECT_EQ(document()->compression(MapSlot::Normal).format, "bc5");
-  EXPECT_EQ(document()->compression(MapSlot::Color).quality, "fast");
+  ASSERT_TRUE(document()->compression(MapSlot::Normal).has_value());
+  EXPECT_EQ(document()->compression(MapSlot::Normal)->format, TextureFormat::Bc5);
+  ASSERT_TRUE(document()->compression(MapSlot::Color).has_value());
+  EXPECT_EQ(document()->compression(MapSlot::Color)->quality, core::CompressionQuality::Fast);
 
   // The GUI keeps turning while the maps compress: a 10 ms timer ticks during the run.
   int ticks = 0;
@@ -92,7 +94,7 @@ TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks)
 
   ASSERT_EQ(panel()->outcomes().size(), 3u);
   EXPECT_EQ(panel()->resultsTable()->rowCount(), 3);
-  const ui::CompressionOutcome& bc5 = panel()->outcomes().at(MapSlot::Normal);
+  const core::CompressionOutcome& bc5 = panel()->outcomes().at(MapSlot::Normal);
   ASSERT_TRUE(bc5.report.normal.has_value());
   EXPECT_LT(bc5.report.normal->meanDegrees, 1.0);
   EXPECT_EQ(bc5.texture->levels.size(), 11u);  // mipmaps on by default: 1024 .. 1
@@ -183,7 +185,7 @@ TEST_F(CompressPanelTest, TheCompareViewIsTexelExactAndShowsDifferences) {
   ui::CompareDialog* dialog = panel()->compareDialog();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
   ui::CompareView* view = dialog->view();
-  const ui::CompressionOutcome& outcome = panel()->outcomes().at(MapSlot::Color);
+  const core::CompressionOutcome& outcome = panel()->outcomes().at(MapSlot::Color);
 
   // Zoomed to 8:1 about texel (20, 30) (fitted, the whole map is on screen, so it stays there),
   // with the wipe at the far right (all original), then the far left (all compressed): the
@@ -233,7 +235,7 @@ TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatB
   EXPECT_EQ(dialog->table()->rowCount(), int(formats));
   EXPECT_EQ(dialog->chartView()->chart()->series().size(), qsizetype(formats));
   // Every row carries a finite quality and a rate matching the format's.
-  for (const ui::CompressionOutcome& outcome : dialog->outcomes()) {
+  for (const core::CompressionOutcome& outcome : dialog->outcomes()) {
     EXPECT_DOUBLE_EQ(outcome.report.size->bitsPerPixel,
                      core::bitsPerPixel(outcome.job.settings.format));
     EXPECT_GT(outcome.report.image.psnr, 30.0)
@@ -254,7 +256,8 @@ TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatB
   ASSERT_NE(use, nullptr);
   QTest::mouseClick(use, Qt::LeftButton);
   EXPECT_EQ(panel()->formatBox(MapSlot::Height)->currentData().toInt(), int(TextureFormat::EacR11));
-  EXPECT_EQ(document()->compression(MapSlot::Height).format, "eac-r11");
+  ASSERT_TRUE(document()->compression(MapSlot::Height).has_value());
+  EXPECT_EQ(document()->compression(MapSlot::Height)->format, TextureFormat::EacR11);
   dialog->close();
 }
 

@@ -2,19 +2,19 @@
 // same material; the prompt before unsaved changes are lost (on close, New and Revert);
 // autosave and recovery after a crash; the preset library; export; viewport images; the
 // shortcut list. Modal dialogs are answered by a timer, as a user would click them.
-#include "core/ImageIO.h"
-#include "core/MaterialPreset.h"
+#include "core/image/ImageIO.h"
+#include "core/material/MaterialPreset.h"
 #include "support/TestPaths.h"
-#include "ui/DocumentFiles.h"
-#include "ui/ExportDialog.h"
-#include "ui/MainWindow.h"
-#include "ui/MaterialDocument.h"
-#include "ui/ParameterPanel.h"
-#include "ui/ParameterSlider.h"
-#include "ui/PresetLibrary.h"
-#include "ui/RecoveryStore.h"
-#include "ui/ShortcutsDialog.h"
-#include "ui/ViewportWidget.h"
+#include "ui/dialogs/ExportDialog.h"
+#include "ui/dialogs/ShortcutsDialog.h"
+#include "ui/document/DocumentFiles.h"
+#include "ui/document/MaterialDocument.h"
+#include "ui/document/PresetLibrary.h"
+#include "ui/document/RecoveryStore.h"
+#include "ui/panels/ParameterPanel.h"
+#include "ui/panels/ParameterSlider.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/window/MainWindow.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -216,7 +216,7 @@ TEST_F(DocumentWorkflow, AFailedSaveLeavesTheFileAndTheChanges) {
   const std::string blocked = scratchFolder() + "/blocked-file";
   std::ofstream(blocked) << "x";
   core::Result<core::SavedPreset> saved =
-      document()->save(QString::fromStdString(blocked + "/inside.relief"), core::PresetView{});
+      document()->save(QString::fromStdString(blocked + "/inside.relief"), core::ViewState{});
   EXPECT_FALSE(saved.ok());
   EXPECT_TRUE(document()->isModified());
   EXPECT_EQ(document()->filePath().toStdString(), m_path);
@@ -303,7 +303,7 @@ TEST_F(DocumentWorkflow, LibraryListsSamplesAndAppliesParametersAsOneStep) {
 
 TEST_F(DocumentWorkflow, ExportDialogWritesAGodotMaterial) {
   const std::string folder = scratchFolder() + "/ui-export";
-  ui::ExportDialog dialog(document()->toPreset(core::PresetView{}), m_window->viewport()->mesh(),
+  ui::ExportDialog dialog(document()->toPreset(core::ViewState{}), m_window->viewport()->mesh(),
                           m_window.get());
   dialog.kindBox()->setCurrentIndex(2);
   dialog.folderEdit()->setText(QString::fromStdString(folder));

@@ -1,15 +1,16 @@
 // The Generate panel in the real window: a live preview and a full-size result in the
 // background, Apply as one undo step that the viewport shows at once, undo restoring the old
 // map, the material compensated when it must be, and clear messages for missing sources.
-#include "core/ColorSpace.h"
+#include "core/image/ColorSpace.h"
+#include "renderer/ImageConversion.h"
 #include "support/ImageCompare.h"
 #include "support/TestPaths.h"
-#include "ui/GeneratePanel.h"
-#include "ui/GeneratorRunner.h"
-#include "ui/MainWindow.h"
-#include "ui/MaterialDocument.h"
-#include "ui/ParameterSlider.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/MaterialDocument.h"
+#include "ui/panels/GeneratePanel.h"
+#include "ui/panels/ParameterSlider.h"
+#include "ui/tasks/GeneratorRunner.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/window/MainWindow.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -25,14 +26,7 @@ namespace relief::test {
 namespace {
 
 core::Image grabbed(ui::ViewportWidget* viewport) {
-  const QImage rgba = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGBA8888);
-  core::Image image(rgba.width(), rgba.height(), 4, core::ColorSpace::Srgb);
-  for (int y = 0; y < rgba.height(); ++y) {
-    const uchar* line = rgba.constScanLine(y);
-    for (int x = 0; x < rgba.width() * 4; ++x)
-      image.pixel(0, y)[x] = float(line[x]) / 255.0f;
-  }
-  return image;
+  return renderer::fromQImage(viewport->grabFramebuffer());
 }
 
 class GeneratePanelTest : public ::testing::Test {

@@ -1,16 +1,17 @@
 // The real main window under Xvfb: it opens on a sample, the viewport shows a lit frame, the
 // parameter sliders change it live, undo brings it back, and the viewport shows exactly what
 // the offscreen renderer (and so relief-cli render) produces for the same view.
-#include "core/ColorSpace.h"
-#include "core/MaterialPreset.h"
+#include "core/image/ColorSpace.h"
+#include "core/material/MaterialPreset.h"
+#include "renderer/ImageConversion.h"
 #include "renderer/OffscreenRenderer.h"
 #include "support/ImageCompare.h"
 #include "support/TestPaths.h"
-#include "ui/MainWindow.h"
-#include "ui/MaterialDocument.h"
-#include "ui/ParameterPanel.h"
-#include "ui/ParameterSlider.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/MaterialDocument.h"
+#include "ui/panels/ParameterPanel.h"
+#include "ui/panels/ParameterSlider.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/window/MainWindow.h"
 
 #include <QCheckBox>
 #include <QSlider>
@@ -25,14 +26,7 @@ namespace relief::test {
 namespace {
 
 core::Image toImage(const QImage& grabbed) {
-  const QImage rgba = grabbed.convertToFormat(QImage::Format_RGBA8888);
-  core::Image image(rgba.width(), rgba.height(), 4, core::ColorSpace::Srgb);
-  for (int y = 0; y < rgba.height(); ++y) {
-    const uchar* line = rgba.constScanLine(y);
-    for (int x = 0; x < rgba.width() * 4; ++x)
-      image.pixel(0, y)[x] = float(line[x]) / 255.0f;
-  }
-  return image;
+  return renderer::fromQImage(grabbed);
 }
 
 // The frame changed visibly: on average over the whole frame (background included, which no

@@ -1,15 +1,16 @@
 // Every control of the viewport's material, light and view, driven through the real widgets:
 // each must change the next frame (checked on the grabbed framebuffer), and nothing redraws
 // when nothing changed.
-#include "core/ColorSpace.h"
+#include "core/image/ColorSpace.h"
+#include "renderer/ImageConversion.h"
 #include "support/ImageCompare.h"
 #include "support/TestPaths.h"
-#include "ui/LightPanel.h"
-#include "ui/MainWindow.h"
-#include "ui/MaterialDocument.h"
-#include "ui/ParameterPanel.h"
-#include "ui/ParameterSlider.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/MaterialDocument.h"
+#include "ui/panels/LightPanel.h"
+#include "ui/panels/ParameterPanel.h"
+#include "ui/panels/ParameterSlider.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/window/MainWindow.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -27,14 +28,7 @@ namespace {
 using core::ParamId;
 
 core::Image grabbed(ui::ViewportWidget* viewport) {
-  const QImage rgba = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGBA8888);
-  core::Image image(rgba.width(), rgba.height(), 4, core::ColorSpace::Srgb);
-  for (int y = 0; y < rgba.height(); ++y) {
-    const uchar* line = rgba.constScanLine(y);
-    for (int x = 0; x < rgba.width() * 4; ++x)
-      image.pixel(0, y)[x] = float(line[x]) / 255.0f;
-  }
-  return image;
+  return renderer::fromQImage(viewport->grabFramebuffer());
 }
 
 class ViewportControls : public ::testing::Test {

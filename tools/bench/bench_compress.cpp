@@ -5,10 +5,10 @@
 //
 // Quality: PSNR (dB) for colour, mean angular error (degrees) for normals, PSNR for height.
 // Run: build/release/tools/bench-compress [--quick]   (--quick skips quality "best")
-#include "core/ImageIO.h"
 #include "core/compression/CompressionMetrics.h"
 #include "core/compression/Compressor.h"
 #include "core/generators/ImageFilters.h"
+#include "core/image/ImageIO.h"
 
 #include <squish.h>
 

@@ -5,9 +5,9 @@
 // Inputs are the bricks sample's height resized (a real map, not noise).
 //
 // Run: build/release/tools/bench-generate [runs, default 3]
-#include "core/ImageIO.h"
 #include "core/generators/Generators.h"
 #include "core/generators/ImageFilters.h"
+#include "core/image/ImageIO.h"
 
 #include <sys/resource.h>
 

@@ -5,8 +5,8 @@
 // several runs and prints each row's ratio to `normal` for the same view, measured in the same run.
 //
 // Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5]
-#include "core/MaterialPreset.h"
-#include "core/MeshPrimitives.h"
+#include "core/material/MaterialPreset.h"
+#include "core/mesh/MeshPrimitives.h"
 #include "renderer/MaterialRenderer.h"
 #include "renderer/OpenGLProbe.h"
 

@@ -3,7 +3,7 @@
 // the relief depth (heightScale, in UV units) the normal map is baked for.
 #pragma once
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 
 #include <string>
 #include <vector>

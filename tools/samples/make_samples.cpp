@@ -3,10 +3,10 @@
 // a 16-bit height map and a .relief preset. Run: make-samples <samples-folder> [size].
 #include "SampleMaterials.h"
 
-#include "core/ColorSpace.h"
-#include "core/ImageIO.h"
-#include "core/MaterialPreset.h"
 #include "core/generators/NormalFromHeight.h"
+#include "core/image/ColorSpace.h"
+#include "core/image/ImageIO.h"
+#include "core/material/MaterialPreset.h"
 
 #include <cstdio>
 #include <cstdlib>

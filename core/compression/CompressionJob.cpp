@@ -1,0 +1,86 @@
+// CompressionJob; see CompressionJob.h.
+#include "core/compression/CompressionJob.h"
+
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+
+namespace relief::core::inline compression {
+namespace {
+
+std::string lowerCase(std::string_view text) {
+  std::string lower(text);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return lower;
+}
+
+}  // namespace
+
+Result<std::vector<std::string>> checkCompression(const Image& map, MapSlot slot,
+                                                  TextureFormat format) {
+  const TextureFormatInfo& info = textureFormatInfo(format);
+  if (!formatSuitsSlot(format, slot)) {
+    return makeError(std::string(info.label) + " cannot hold a " + lowerCase(mapSlotLabel(slot)) +
+                     " map");
+  }
+  std::vector<std::string> warnings;
+  if (const double outside = shareOutsideUnitRange(map); outside > 0.0) {
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%.3g", outside * 100.0);
+    warnings.push_back(std::string(percent) +
+                       "% of the values lie outside 0..1 and are clamped (GPU formats store "
+                       "0..1; normalise the map first to keep them)");
+  }
+  if (map.channels() >= 3 && isSingleChannelFormat(format)) {
+    warnings.push_back("it has " + std::to_string(map.channels()) + " channels; " +
+                       std::string(info.label) + " keeps only the first (red)");
+  }
+  return warnings;
+}
+
+Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
+                                             const WorkControl& control) {
+  Result<std::vector<std::string>> warnings =
+      checkCompression(*job.map, job.slot, job.settings.format);
+  if (!warnings)
+    return makeError(warnings.error());
+  QElapsedTimer timer;
+  timer.start();
+  Result<CompressedTexture> texture = compressMap(*job.map, job.slot, job.settings, control);
+  if (!texture)
+    return makeError(texture.error());
+  const double seconds = double(timer.nsecsElapsed()) * 1e-9;
+
+  CompressionOutcome outcome;
+  outcome.job = job;
+  outcome.warnings = std::move(warnings).value();
+  if (job.measure) {
+    Result<Image> decoded = decodeAsMap(texture.value());
+    if (!decoded)
+      return makeError(decoded.error());
+    outcome.report = makeCompressionReport(*job.map, decoded.value(), job.slot, job.heightScale);
+    outcome.decoded = std::make_shared<const Image>(std::move(decoded).value());
+  }
+  outcome.report.slot = job.slot;
+  outcome.report.format = job.settings.format;
+  outcome.report.encodeSeconds = seconds;
+  outcome.report.size = measureSize(job.settings.format, job.map->channels(), texture->byteSize());
+  outcome.texture = std::make_shared<const CompressedTexture>(std::move(texture).value());
+  return outcome;
+}
+
+TextureFormat suggestedFormat(MapSlot slot, int channels) {
+  switch (slot) {
+    case MapSlot::Color:
+      return channels == 4 ? TextureFormat::Bc3 : TextureFormat::Bc1;
+    case MapSlot::Normal:
+      return TextureFormat::Bc5;
+    default:
+      return TextureFormat::Bc4;
+  }
+}
+
+}  // namespace relief::core::inline compression

@@ -1,0 +1,55 @@
+// The compression workflow, written once: check that a format suits a map, warn about what it
+// will lose (values clamped to 0..1, channels dropped), compress with progress and cancel, time
+// it, decode the blocks back and measure them against the original. relief-cli compress, the
+// Compress panel, compare-all-formats and package export all run maps through here; they only
+// differ in how they show the result. Also the default choice of a format for a map slot.
+#pragma once
+
+#include "core/base/Result.h"
+#include "core/base/WorkControl.h"
+#include "core/compression/CompressionReport.h"
+#include "core/compression/Compressor.h"
+#include "core/compression/TextureFile.h"
+#include "core/material/MapSlot.h"
+#include "core/material/Parameters.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace relief::core::inline compression {
+
+struct CompressionJob {
+  std::shared_ptr<const Image> map;
+  MapSlot slot = MapSlot::Color;
+  CompressionSettings settings;
+  // The parallax height scale the height metric assumes (the material's heightScale).
+  double heightScale = parameterDefault(ParamId::HeightScale);
+  // Decode and measure the result (the report); package export only needs the blocks.
+  bool measure = true;
+};
+
+struct CompressionOutcome {
+  CompressionJob job;
+  std::shared_ptr<const CompressedTexture> texture;
+  std::shared_ptr<const Image> decoded;  // null unless measured
+  CompressionReport report;              // format, size and time always; metrics when measured
+  // What the artist should know, e.g. "62% of the values lie outside 0..1 and are clamped".
+  std::vector<std::string> warnings;
+};
+
+// An error when the format cannot hold a map of this slot ("BC4 (ATI1) cannot hold a colour
+// map"), otherwise what compressing `map` into `format` loses that the artist should know.
+Result<std::vector<std::string>> checkCompression(const Image& map, MapSlot slot,
+                                                  TextureFormat format);
+
+// Runs one job. Fails with "cancelled" when cancelled, or with the reason the format cannot
+// hold the map; the message does not name the map (callers add its file or slot).
+Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
+                                             const WorkControl& control = {});
+
+// The usual choice for a map: BC1 (BC3 with alpha) for colour, BC5 for normals, BC4 for
+// single-value maps; what the Compress panel picks when the artist has chosen nothing.
+TextureFormat suggestedFormat(MapSlot slot, int channels);
+
+}  // namespace relief::core::inline compression

@@ -1,0 +1,221 @@
+// GltfExport; see GltfExport.h. Layout choices the glTF 2.0 specification requires: texture
+// coordinates have their origin at the image's top-left (v is flipped), accessors are 4-byte
+// aligned, POSITION has min and max, normal textures are +Y up (OpenGL), colour textures sRGB.
+#include "core/exporters/GltfExport.h"
+
+#include "core/base/AtomicFile.h"
+#include "core/exporters/EngineConversion.h"
+#include "core/exporters/PackageExport.h"
+#include "core/image/ImageIO.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+namespace relief::core::inline exporters {
+namespace {
+
+constexpr int kFloat = 5126;
+constexpr int kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+class BinaryBuilder {
+ public:
+  // Appends values as a buffer view and an accessor; returns the accessor's index.
+  template <class T>
+  int add(const std::vector<T>& values, int componentType, const char* type, int count, int target,
+          QJsonArray& views, QJsonArray& accessors, QJsonObject extra = {}) {
+    while (m_bytes.size() % 4)
+      m_bytes.push_back('\0');
+    const std::size_t offset = m_bytes.size();
+    const std::size_t length = values.size() * sizeof(T);
+    m_bytes.resize(offset + length);
+    std::memcpy(m_bytes.data() + offset, values.data(), length);
+    views.append(QJsonObject{{"buffer", 0},
+                             {"byteOffset", qint64(offset)},
+                             {"byteLength", qint64(length)},
+                             {"target", target}});
+    QJsonObject accessor{{"bufferView", views.size() - 1},
+                         {"componentType", componentType},
+                         {"count", count},
+                         {"type", type}};
+    for (auto it = extra.begin(); it != extra.end(); ++it)
+      accessor.insert(it.key(), it.value());
+    accessors.append(accessor);
+    return int(accessors.size() - 1);
+  }
+  const std::string& bytes() const { return m_bytes; }
+
+ private:
+  std::string m_bytes;
+};
+
+QJsonValue parameterJson(const ParameterSpec& spec, double value) {
+  switch (spec.kind) {
+    case ParamKind::Bool:
+      return value != 0.0;
+    case ParamKind::Choice:
+      return QString::fromUtf8(spec.choices[std::size_t(value)].data());
+    default:
+      return value;
+  }
+}
+
+}  // namespace
+
+Result<std::string> exportGltf(const Preset& preset, const Mesh& mesh, const std::string& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec)
+    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  if (mesh.vertices.empty() || mesh.indices.empty())
+    return makeError("the mesh is empty");
+  const Material& material = preset.material;
+  const std::string stem = exportStem(material);
+  const std::filesystem::path directory(folder);
+
+  // Vertex data; tiling baked into the texture coordinates (core glTF has no UV transform).
+  const float tiling = material.parameterf(ParamId::Tiling);
+  std::vector<float> positions, normals, tangents, uvs;
+  glm::vec3 low = mesh.vertices.front().position, high = low;
+  for (const Vertex& v : mesh.vertices) {
+    positions.insert(positions.end(), {v.position.x, v.position.y, v.position.z});
+    normals.insert(normals.end(), {v.normal.x, v.normal.y, v.normal.z});
+    tangents.insert(tangents.end(), {v.tangent.x, v.tangent.y, v.tangent.z, v.tangent.w});
+    uvs.insert(uvs.end(), {v.uv.x * tiling, 1.0f - v.uv.y * tiling});
+    low = glm::min(low, v.position);
+    high = glm::max(high, v.position);
+  }
+  BinaryBuilder binary;
+  QJsonArray views, accessors;
+  const int count = int(mesh.vertices.size());
+  const int position = binary.add(
+      positions, kFloat, "VEC3", count, kArrayBuffer, views, accessors,
+      {{"min", QJsonArray{low.x, low.y, low.z}}, {"max", QJsonArray{high.x, high.y, high.z}}});
+  const int normal = binary.add(normals, kFloat, "VEC3", count, kArrayBuffer, views, accessors);
+  const int tangent = binary.add(tangents, kFloat, "VEC4", count, kArrayBuffer, views, accessors);
+  const int uv = binary.add(uvs, kFloat, "VEC2", count, kArrayBuffer, views, accessors);
+  const int indices = binary.add(mesh.indices, kUnsignedInt, "SCALAR", int(mesh.indices.size()),
+                                 kElementArrayBuffer, views, accessors);
+
+  // Textures: one image, one texture each, sharing a repeating trilinear sampler.
+  QJsonArray images, textures;
+  const auto addTexture = [&](const Image& image, const std::string& suffix,
+                              SampleFormat format) -> Result<int> {
+    const std::string name = stem + "_" + suffix + ".png";
+    if (Status saved = saveImage(image, (directory / name).string(), format); !saved) {
+      return makeError(saved.error());
+    }
+    images.append(QJsonObject{{"uri", QString::fromStdString(name)}, {"mimeType", "image/png"}});
+    textures.append(QJsonObject{{"source", images.size() - 1}, {"sampler", 0}});
+    return int(textures.size() - 1);
+  };
+
+  QJsonObject pbr{
+      {"metallicFactor", 0.0},
+      {"roughnessFactor", roughnessFromShininess(material.parameter(ParamId::Shininess))}};
+  QJsonObject gltfMaterial{{"name", QString::fromStdString(stem)}};
+  if (const Image* color = material.image(MapSlot::Color)) {
+    auto index = addTexture(*color, "color", SampleFormat::UInt8);
+    if (!index)
+      return makeError(index.error());
+    pbr.insert("baseColorTexture", QJsonObject{{"index", index.value()}});
+  }
+  if (const Image* roughness = material.image(MapSlot::Roughness)) {
+    // glTF reads roughness from green and metalness from blue.
+    Image packed(roughness->width(), roughness->height(), 3);
+    for (std::size_t p = 0; p < packed.pixelCount(); ++p) {
+      packed.data()[p * 3 + 1] = roughness->data()[p * std::size_t(roughness->channels())];
+    }
+    auto index = addTexture(packed, "metallic_roughness", SampleFormat::UInt8);
+    if (!index)
+      return makeError(index.error());
+    pbr.insert("metallicRoughnessTexture", QJsonObject{{"index", index.value()}});
+    pbr.insert("roughnessFactor", 1.0);
+  }
+  gltfMaterial.insert("pbrMetallicRoughness", pbr);
+  if (const Image* normalMap = material.image(MapSlot::Normal)) {
+    const Image converted =
+        openGlNormalMap(*normalMap, material.parameterFlag(ParamId::NormalYDown));
+    auto index = addTexture(converted, "normal", SampleFormat::UInt8);
+    if (!index)
+      return makeError(index.error());
+    gltfMaterial.insert("normalTexture",
+                        QJsonObject{{"index", index.value()},
+                                    {"scale", material.parameter(ParamId::NormalStrength)}});
+  }
+  if (const Image* occlusion = material.image(MapSlot::AmbientOcclusion)) {
+    auto index = addTexture(*occlusion, "occlusion", SampleFormat::UInt8);
+    if (!index)
+      return makeError(index.error());
+    gltfMaterial.insert("occlusionTexture", QJsonObject{{"index", index.value()}});
+  }
+  QJsonObject relief{{"technique", QString::fromUtf8(techniqueName(material.technique()).data())}};
+  QJsonObject parameters;
+  for (const ParameterSpec& spec : allParameters()) {
+    parameters.insert(QString::fromUtf8(spec.name.data()),
+                      parameterJson(spec, material.parameter(spec.id)));
+  }
+  relief.insert("parameters", parameters);
+  if (const Image* height = material.image(MapSlot::Height)) {
+    // 16-bit, as the parallax needs; referenced by its image, which no glTF texture samples.
+    const std::string name = stem + "_height.png";
+    if (Status saved = saveImage(*height, (directory / name).string(), SampleFormat::UInt16);
+        !saved) {
+      return makeError(saved.error());
+    }
+    relief.insert("heightImage", QString::fromStdString(name));
+    relief.insert("note", "Texture coordinates are already multiplied by the tiling parameter.");
+  }
+  gltfMaterial.insert("extras", QJsonObject{{"relief", relief}});
+
+  const std::string binName = stem + ".bin";
+  const QJsonObject root{
+      {"asset", QJsonObject{{"version", "2.0"}, {"generator", "Relief"}}},
+      {"scene", 0},
+      {"scenes", QJsonArray{QJsonObject{{"nodes", QJsonArray{0}}}}},
+      {"nodes", QJsonArray{QJsonObject{{"mesh", 0}, {"name", QString::fromStdString(stem)}}}},
+      {"meshes",
+       QJsonArray{QJsonObject{
+           {"name", QString::fromStdString(mesh.name.empty() ? stem : mesh.name)},
+           {"primitives", QJsonArray{QJsonObject{{"attributes", QJsonObject{{"POSITION", position},
+                                                                            {"NORMAL", normal},
+                                                                            {"TANGENT", tangent},
+                                                                            {"TEXCOORD_0", uv}}},
+                                                 {"indices", indices},
+                                                 {"material", 0},
+                                                 {"mode", 4}}}}}}},
+      {"materials", QJsonArray{gltfMaterial}},
+      {"samplers",
+       QJsonArray{QJsonObject{
+           {"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}}}},
+      {"buffers", QJsonArray{QJsonObject{{"uri", QString::fromStdString(binName)},
+                                         {"byteLength", qint64(binary.bytes().size())}}}},
+      {"bufferViews", views},
+      {"accessors", accessors},
+  };
+  QJsonObject document = root;
+  if (!images.isEmpty()) {
+    document.insert("images", images);
+    document.insert("textures", textures);
+  }
+  if (Status written = writeFileAtomically((directory / binName).string(), binary.bytes());
+      !written) {
+    return makeError(written.error());
+  }
+  const std::string gltfPath = (directory / (stem + ".gltf")).string();
+  const QByteArray json = QJsonDocument(document).toJson(QJsonDocument::Indented);
+  if (Status written = writeFileAtomically(
+          gltfPath, std::string_view(json.constData(), std::size_t(json.size())));
+      !written) {
+    return makeError(written.error());
+  }
+  return gltfPath;
+}
+
+}  // namespace relief::core::inline exporters

@@ -1,0 +1,158 @@
+// GodotExport; see GodotExport.h and docs/export.md for the conversion.
+#include "core/exporters/GodotExport.h"
+
+#include "core/base/AtomicFile.h"
+#include "core/exporters/EngineConversion.h"
+#include "core/exporters/PackageExport.h"
+#include "core/image/ImageIO.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace relief::core::inline exporters {
+namespace {
+
+std::string number(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
+  std::string text = buffer;
+  // Godot writes floats with a decimal point.
+  if (text.find_first_of(".e") == std::string::npos)
+    text += ".0";
+  return text;
+}
+
+const char* boolean(bool value) {
+  return value ? "true" : "false";
+}
+
+}  // namespace
+
+Result<GodotExportResult> exportGodot(const Preset& preset, const std::string& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec)
+    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  const Material& material = preset.material;
+  const std::string stem = exportStem(material);
+  const std::filesystem::path directory(folder);
+  GodotExportResult result;
+
+  struct Texture {
+    std::string id;
+    std::string file;
+  };
+  std::vector<Texture> textures;
+  const auto addTexture = [&](const Image& image, const std::string& suffix,
+                              SampleFormat format) -> Status {
+    const std::string file = stem + "_" + suffix + ".png";
+    if (Status saved = saveImage(image, (directory / file).string(), format); !saved)
+      return saved;
+    textures.push_back({std::to_string(textures.size() + 1) + "_" + suffix, file});
+    return {};
+  };
+  const auto idOf = [&](const std::string& suffix) {
+    for (const Texture& t : textures) {
+      if (t.id.size() > suffix.size() && t.id.substr(t.id.size() - suffix.size()) == suffix)
+        return t.id;
+    }
+    return std::string();
+  };
+
+  if (const Image* color = material.image(MapSlot::Color)) {
+    if (Status s = addTexture(*color, "albedo", SampleFormat::UInt8); !s)
+      return makeError(s.error());
+  }
+  if (const Image* normals = material.image(MapSlot::Normal)) {
+    // Godot reads normal maps as X+ Y+ Z+ (OpenGL).
+    const Image converted = openGlNormalMap(*normals, material.parameterFlag(ParamId::NormalYDown));
+    if (Status s = addTexture(converted, "normal", SampleFormat::UInt8); !s)
+      return makeError(s.error());
+  }
+  const bool parallax =
+      material.technique() != Technique::Normal && material.hasMap(MapSlot::Height);
+  if (parallax) {
+    if (Status s = addTexture(*material.image(MapSlot::Height), "height", SampleFormat::UInt16);
+        !s) {
+      return makeError(s.error());
+    }
+  }
+  if (const Image* occlusion = material.image(MapSlot::AmbientOcclusion)) {
+    if (Status s = addTexture(*occlusion, "ao", SampleFormat::UInt8); !s)
+      return makeError(s.error());
+  }
+  if (const Image* roughness = material.image(MapSlot::Roughness)) {
+    if (Status s = addTexture(*roughness, "roughness", SampleFormat::UInt8); !s)
+      return makeError(s.error());
+  }
+
+  std::ostringstream tres;
+  tres << "[gd_resource type=\"StandardMaterial3D\" load_steps=" << textures.size() + 1
+       << " format=3]\n\n";
+  for (const Texture& t : textures) {
+    tres << "[ext_resource type=\"Texture2D\" path=\"" << t.file << "\" id=\"" << t.id << "\"]\n";
+  }
+  tres << "\n[resource]\n";
+  tres << "resource_name = \"" << stem << "\"\n";
+  if (!idOf("albedo").empty())
+    tres << "albedo_texture = ExtResource(\"" << idOf("albedo") << "\")\n";
+  tres << "roughness = " << number(roughnessFromShininess(material.parameter(ParamId::Shininess)))
+       << "\n";
+  if (!idOf("roughness").empty()) {
+    tres << "roughness_texture = ExtResource(\"" << idOf("roughness") << "\")\n";
+  }
+  if (!idOf("normal").empty()) {
+    tres << "normal_enabled = true\n";
+    tres << "normal_scale = " << number(material.parameter(ParamId::NormalStrength)) << "\n";
+    tres << "normal_texture = ExtResource(\"" << idOf("normal") << "\")\n";
+  }
+  if (!idOf("ao").empty()) {
+    tres << "ao_enabled = true\n";
+    tres << "ao_texture = ExtResource(\"" << idOf("ao") << "\")\n";
+  }
+  if (parallax) {
+    const double scale = material.parameter(ParamId::HeightScale);
+    const double bias = material.parameter(ParamId::HeightBias);
+    const bool deep = isMarchingTechnique(material.technique());
+    tres << "heightmap_enabled = true\n";
+    // Godot offsets texture coordinates by view.xy * heightmap_scale * 0.01 at full depth.
+    tres << "heightmap_scale = " << number(scale * 100.0) << "\n";
+    tres << "heightmap_deep_parallax = " << boolean(deep) << "\n";
+    if (deep) {
+      tres << "heightmap_min_layers = " << int(material.parameter(ParamId::MinSamples)) << "\n";
+      tres << "heightmap_max_layers = " << int(material.parameter(ParamId::MaxSamples)) << "\n";
+    }
+    tres << "heightmap_flip_tangent = false\n";
+    tres << "heightmap_flip_binormal = false\n";
+    tres << "heightmap_flip_texture = " << boolean(material.parameterFlag(ParamId::HeightIsDepth))
+         << "\n";
+    tres << "heightmap_texture = ExtResource(\"" << idOf("height") << "\")\n";
+    if (std::abs(bias + scale) > 1e-6) {
+      result.notes.push_back("Godot puts the top of the relief on the surface; heightBias " +
+                             number(bias) + " (not -heightScale) has no Godot equivalent");
+    }
+    if (material.technique() == Technique::Parallax) {
+      result.notes.push_back(
+          "Godot has no unlimited (Kaneko) parallax; its offset-limited "
+          "parallax is used");
+    }
+    if (deep) {
+      result.notes.push_back(
+          "Godot's deep parallax limits the offset like Welsh's (view.xy, not "
+          "view.xy / view.z): at grazing angles the relief looks shallower "
+          "than in Relief");
+    }
+  }
+  const double tiling = material.parameter(ParamId::Tiling);
+  tres << "uv1_scale = Vector3(" << number(tiling) << ", " << number(tiling) << ", 1.0)\n";
+
+  result.tresPath = (directory / (stem + ".tres")).string();
+  if (Status written = writeFileAtomically(result.tresPath, tres.str()); !written) {
+    return makeError(written.error());
+  }
+  return result;
+}
+
+}  // namespace relief::core::inline exporters

@@ -1,0 +1,23 @@
+// Export as a Godot 4 StandardMaterial3D: <name>.tres next to its PNG textures (paths relative
+// to the .tres, which Godot's text loader resolves against the file's own folder). Relief's
+// parameters become Godot's heightmap settings as docs/export.md explains, checked against
+// the code Godot 4 generates for BaseMaterial3D.
+#pragma once
+
+#include "core/base/Result.h"
+#include "core/material/MaterialPreset.h"
+
+#include <string>
+#include <vector>
+
+namespace relief::core::inline exporters {
+
+struct GodotExportResult {
+  std::string tresPath;
+  // What Godot cannot represent exactly (a height bias, Kaneko's parallax), for the user.
+  std::vector<std::string> notes;
+};
+
+Result<GodotExportResult> exportGodot(const Preset& preset, const std::string& folder);
+
+}  // namespace relief::core::inline exporters

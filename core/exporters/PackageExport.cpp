@@ -1,0 +1,101 @@
+// PackageExport; see PackageExport.h.
+#include "core/exporters/PackageExport.h"
+
+#include "core/compression/Compressor.h"
+#include "core/compression/TextureFile.h"
+#include "core/image/ImageIO.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace relief::core::inline exporters {
+
+std::string exportStem(const Material& material) {
+  std::string stem = material.name().empty() ? std::string("material") : material.name();
+  std::replace_if(
+      stem.begin(), stem.end(),
+      [](unsigned char c) { return !(std::isalnum(c) || c == '-' || c == '_'); }, '_');
+  return stem;
+}
+
+namespace {
+
+// The compressed copy of one map, when the preset has a compression choice for it.
+Status writeCompressed(const Preset& preset, MapSlot slot, const std::string& folder,
+                       const std::string& stem, const PackageOptions& options) {
+  const MapCompression& choice = preset.compression[std::size_t(slot)];
+  if (options.textures == PackageTextures::None || !choice)
+    return {};
+  const TextureFormat* format = &choice->format;
+  if (!formatSuitsSlot(*format, slot)) {
+    return makeError(std::string(mapSlotLabel(slot)) +
+                     " map: " + std::string(textureFormatInfo(*format).label) + " cannot hold it");
+  }
+  Result<CompressedTexture> texture = compressMap(*preset.material.map(slot).image, slot, *choice);
+  if (!texture)
+    return makeError(std::string(mapSlotLabel(slot)) + " map: " + texture.error());
+  const bool dds = options.textures == PackageTextures::DdsWherePossible &&
+                   textureFormatInfo(*format).fourCC != 0;
+  const std::string path =
+      (std::filesystem::path(folder) /
+       (stem + "_" + std::string(mapSlotName(slot)) + (dds ? ".dds" : ".ktx2")))
+          .string();
+  return saveCompressedTexture(texture.value(), path);
+}
+
+}  // namespace
+
+Result<std::string> exportPackage(const Preset& preset, const std::string& folder,
+                                  const PackageOptions& options) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec)
+    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  const std::string stem = exportStem(preset.material);
+  Preset packaged = preset;
+  for (MapSlot slot : kAllMapSlots) {
+    const MaterialMap& map = preset.material.map(slot);
+    if (!map.image)
+      continue;
+    std::string extension = ".png";
+    SampleFormat format = SampleFormat::UInt8;
+    if (slot != MapSlot::Color) {
+      switch (options.dataMaps) {
+        case PackageMapFormat::Png8:
+          break;
+        case PackageMapFormat::Png16:
+          format = SampleFormat::UInt16;
+          break;
+        case PackageMapFormat::Exr:
+          extension = ".exr";
+          format = SampleFormat::Float;
+          break;
+      }
+    }
+    const std::string path =
+        (std::filesystem::path(folder) / (stem + "_" + std::string(mapSlotName(slot)) + extension))
+            .string();
+    if (Status saved = saveImage(*map.image, path, format); !saved) {
+      return makeError(saved.error());
+    }
+    packaged.material.setMap(slot, map.image, std::filesystem::absolute(path).string());
+    if (Status compressed = writeCompressed(preset, slot, folder, stem, options); !compressed)
+      return makeError(compressed.error());
+  }
+  // A mesh file travels with the package; primitives are names.
+  if (std::filesystem::path(packaged.view.mesh).has_extension()) {
+    const std::filesystem::path source(packaged.view.mesh);
+    const std::filesystem::path copy = std::filesystem::path(folder) / source.filename();
+    std::filesystem::copy_file(source, copy, std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec)
+      return makeError(source.string() + ": cannot copy the mesh (" + ec.message() + ")");
+    packaged.view.mesh = std::filesystem::absolute(copy).string();
+  }
+  const std::string presetPath = (std::filesystem::path(folder) / (stem + ".relief")).string();
+  if (auto saved = savePreset(packaged, presetPath); !saved)
+    return makeError(saved.error());
+  return presetPath;
+}
+
+}  // namespace relief::core::inline exporters

@@ -1,0 +1,258 @@
+// OpenImageIO-backed image files; see ImageIO.h.
+#include "core/image/ImageIO.h"
+
+#include "core/base/ThirdPartyAllocationScope.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <system_error>
+#include <vector>
+
+namespace relief::core::inline image {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// OpenImageIO's messages often repeat the path and end with newlines; keep them readable.
+std::string cleanOiioMessage(std::string message) {
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
+    message.pop_back();
+  }
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  return message.empty() ? std::string("unknown error") : message;
+}
+
+// Checks the things OpenImageIO reports badly or not at all: a missing file, a folder, an
+// empty file.
+Status checkReadableFile(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) {
+    return makeError(path + ": file not found");
+  }
+  if (!fs::is_regular_file(status)) {
+    return makeError(path + ": not a regular file");
+  }
+  if (fs::file_size(path, ec) == 0 && !ec) {
+    return makeError(path + ": the file is empty (0 bytes)");
+  }
+  return {};
+}
+
+ColorSpace colorSpaceOf(const OIIO::ImageSpec& spec) {
+  if (spec.format.is_floating_point()) {
+    return ColorSpace::Linear;
+  }
+  const std::string tag = spec.get_string_attribute("oiio:ColorSpace");
+  return (tag == "sRGB" || tag.rfind("Gamma", 0) == 0) ? ColorSpace::Srgb : ColorSpace::Linear;
+}
+
+Status validateSpec(const std::string& path, const OIIO::ImageSpec& spec) {
+  if (spec.width <= 0 || spec.height <= 0) {
+    return makeError(path + ": the header gives an empty size (" + std::to_string(spec.width) +
+                     "x" + std::to_string(spec.height) + ")");
+  }
+  if (spec.width > kMaxImageDimension || spec.height > kMaxImageDimension) {
+    return makeError(path + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                     " exceeds the limit of " + std::to_string(kMaxImageDimension) + "x" +
+                     std::to_string(kMaxImageDimension) + " texels");
+  }
+  if (spec.depth > 1) {
+    return makeError(path + ": volume images are not supported");
+  }
+  if (spec.nchannels < 1) {
+    return makeError(path + ": the image has no channels");
+  }
+  return {};
+}
+
+Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
+  if (Status readable = checkReadableFile(path); !readable) {
+    return makeError(readable.error());
+  }
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) {
+    return makeError(path + ": cannot read as an image (" + cleanOiioMessage(OIIO::geterror()) +
+                     ")");
+  }
+  if (Status valid = validateSpec(path, input->spec()); !valid) {
+    return makeError(valid.error());
+  }
+  return input;
+}
+
+// Runs one pixel read and turns a failure, or a failure reported late on close (a CRC error in
+// the last chunk), into a message naming the file.
+template <class Read>
+Status readPixels(OIIO::ImageInput& input, const std::string& path, Read read, bool closeAfter) {
+  bool ok = false;
+  {
+    const ThirdPartyAllocationScope oiioMayLeakOnDamagedFiles;
+    ok = read();
+  }
+  if (ok && closeAfter)
+    ok = input.close() && !input.has_error();
+  if (!ok) {
+    return makeError(path + ": the pixel data is damaged or truncated (" +
+                     cleanOiioMessage(input.geterror()) + ")");
+  }
+  return {};
+}
+
+OIIO::TypeDesc chooseFileType(const Image& image, const std::string& ext, SampleFormat format) {
+  const bool isExr = ext == ".exr";
+  const bool supports16 = ext == ".png" || ext == ".tif" || ext == ".tiff";
+  switch (format) {
+    case SampleFormat::UInt8:
+      return OIIO::TypeDesc::UINT8;
+    case SampleFormat::UInt16:
+      return OIIO::TypeDesc::UINT16;
+    case SampleFormat::Half:
+      return OIIO::TypeDesc::HALF;
+    case SampleFormat::Float:
+      return OIIO::TypeDesc::FLOAT;
+    case SampleFormat::Auto:
+      break;
+  }
+  if (isExr) {
+    return image.sourceBitsPerChannel() == 32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
+  }
+  if (supports16 && image.sourceBitsPerChannel() > 8) {
+    return OIIO::TypeDesc::UINT16;
+  }
+  return OIIO::TypeDesc::UINT8;
+}
+
+}  // namespace
+
+Result<ImageFileInfo> readImageInfo(const std::string& path) {
+  auto input = openInput(path);
+  if (!input) {
+    return makeError(input.error());
+  }
+  const OIIO::ImageSpec& spec = input.value()->spec();
+  ImageFileInfo info;
+  info.width = spec.width;
+  info.height = spec.height;
+  info.channels = spec.nchannels;
+  info.bitsPerChannel = spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8));
+  info.isFloat = spec.format.is_floating_point();
+  info.formatName = input.value()->format_name();
+  info.colorSpace = colorSpaceOf(spec);
+  return info;
+}
+
+SampleFormat fullPrecisionFormatFor(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".exr")
+    return SampleFormat::Float;
+  if (ext == ".png" || ext == ".tif" || ext == ".tiff")
+    return SampleFormat::UInt16;
+  return SampleFormat::UInt8;
+}
+
+Status verifyImageData(const std::string& path) {
+  auto opened = openInput(path);
+  if (!opened)
+    return makeError(opened.error());
+  OIIO::ImageInput& input = *opened.value();
+  const OIIO::ImageSpec& spec = input.spec();
+  constexpr int kStripRows = 64;
+  std::vector<float> strip(std::size_t(spec.width) * std::size_t(spec.nchannels) * kStripRows);
+  const int lastRow = spec.y + spec.height;
+  for (int y = spec.y; y < lastRow; y += kStripRows) {
+    const int end = std::min(y + kStripRows, lastRow);
+    const auto readStrip = [&] {
+      return input.read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                                  strip.data());
+    };
+    if (Status status = readPixels(input, path, readStrip, end == lastRow); !status) {
+      return status;
+    }
+  }
+  return {};
+}
+
+Result<Image> loadImage(const std::string& path) {
+  auto opened = openInput(path);
+  if (!opened) {
+    return makeError(opened.error());
+  }
+  OIIO::ImageInput& input = *opened.value();
+  const OIIO::ImageSpec& spec = input.spec();
+  const int channels = std::min(spec.nchannels, 4);
+
+  Image image(spec.width, spec.height, channels, colorSpaceOf(spec));
+  image.setSourceBitsPerChannel(
+      spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8)));
+  const auto readAll = [&] {
+    return input.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.data());
+  };
+  if (Status status = readPixels(input, path, readAll, true); !status) {
+    return makeError(status.error());
+  }
+  return image;
+}
+
+Status saveImage(const Image& image, const std::string& path, SampleFormat format) {
+  if (image.isEmpty()) {
+    return makeError(path + ": nothing to save (the image is empty)");
+  }
+  const std::string ext = lowerExtension(path);
+  auto output = OIIO::ImageOutput::create(path);
+  if (!output) {
+    return makeError(path + ": cannot write this file type (" + cleanOiioMessage(OIIO::geterror()) +
+                     ")");
+  }
+  OIIO::ImageSpec spec(image.width(), image.height(), image.channels(),
+                       chooseFileType(image, ext, format));
+  // Tag linear data (normals, heights) as such, so readers do not treat it as sRGB colour.
+  spec.attribute("oiio:ColorSpace", image.colorSpace() == ColorSpace::Srgb ? "sRGB" : "Linear");
+  if (ext == ".exr") {
+    spec.attribute("compression", "zip");
+  }
+  // Quantising finer data to 8 bits bands smooth gradients; OpenImageIO's dither adds noise of
+  // under half a level first. Images that came from 8-bit files stay exact.
+  if (spec.format == OIIO::TypeDesc::UINT8 && image.sourceBitsPerChannel() != 8) {
+    spec.attribute("oiio:dither", 1);
+  }
+
+  // The temporary keeps the extension so that OpenImageIO's writer sees the same format.
+  const fs::path target(path);
+  const fs::path temporary = target.parent_path() / ("." + target.stem().string() + ".saving" +
+                                                     target.extension().string());
+  if (!output->open(temporary.string(), spec) ||
+      !output->write_image(OIIO::TypeDesc::FLOAT, image.data()) || !output->close()) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    return makeError(path + ": cannot write (" + cleanOiioMessage(output->geterror()) + ")");
+  }
+  // Some writers (OpenImageIO 2.4's PNG) report success after a short write, on a full disk
+  // or past a file-size limit. Decoding the file before it replaces the old one catches that.
+  if (Status intact = verifyImageData(temporary.string()); !intact) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    return makeError(path +
+                     ": cannot write (the written file does not read back whole: the "
+                     "disk may be full)");
+  }
+  std::error_code ec;
+  fs::rename(temporary, target, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    return makeError(path + ": cannot replace the file (" + ec.message() + ")");
+  }
+  return {};
+}
+
+}  // namespace relief::core::inline image

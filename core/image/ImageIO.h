@@ -1,0 +1,50 @@
+// Loading and saving Images through OpenImageIO: PNG (8/16-bit), JPEG, TGA, TIFF and OpenEXR
+// (half/float). Sizes are validated from the header before any pixel memory is allocated, and
+// saves are atomic: a failed save leaves an existing file untouched.
+#pragma once
+
+#include "core/base/Result.h"
+#include "core/image/Image.h"
+
+#include <string>
+
+namespace relief::core::inline image {
+
+// What a file's header says, without reading its pixels.
+struct ImageFileInfo {
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  int bitsPerChannel = 0;
+  bool isFloat = false;
+  std::string formatName;  // OpenImageIO's name: "png", "openexr", "jpeg", ...
+  ColorSpace colorSpace = ColorSpace::Linear;
+};
+
+enum class SampleFormat {
+  Auto,  // the image's source bit depth where the format supports it, else the format's best
+  UInt8,
+  UInt16,
+  Half,
+  Float,
+};
+
+Result<ImageFileInfo> readImageInfo(const std::string& path);
+
+// The finest sample format the file type holds, for maps that must not lose precision: float
+// for EXR, 16-bit for PNG and TIFF, 8-bit (dithered by saveImage) for the rest.
+SampleFormat fullPrecisionFormatFor(const std::string& path);
+
+// Decodes every pixel (a strip of rows at a time, so memory stays small) to prove the file is
+// intact: catches truncation and checksum errors that the header alone does not show.
+Status verifyImageData(const std::string& path);
+
+// Reads the first subimage as float. Images with more than four channels keep the first four.
+Result<Image> loadImage(const std::string& path);
+
+// Writes to a temporary file next to `path` and renames it over `path` on success. Writing
+// 8-bit samples from a finer source (not loaded from an 8-bit file) dithers.
+Status saveImage(const Image& image, const std::string& path,
+                 SampleFormat format = SampleFormat::Auto);
+
+}  // namespace relief::core::inline image

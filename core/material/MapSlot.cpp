@@ -1,0 +1,81 @@
+// Map slot names and file-name hints; see MapSlot.h.
+#include "core/material/MapSlot.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+namespace relief::core::inline material {
+namespace {
+
+struct SlotInfo {
+  std::string_view name;
+  std::string_view label;
+  std::array<std::string_view, 6> hints;  // matched as whole words of the file stem
+};
+
+constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
+    {"color", "Colour", {"color", "colour", "albedo", "diffuse", "basecolor", "diff"}},
+    {"normal", "Normal", {"normal", "nrm", "norm", "nor", "normalgl", "normaldx"}},
+    {"height", "Height", {"height", "disp", "displacement", "bump", "depth", "parallax"}},
+    {"ao", "Ambient occlusion", {"ao", "occlusion", "ambientocclusion", "", "", ""}},
+    {"roughness", "Roughness", {"roughness", "rough", "rgh", "", "", ""}},
+}};
+
+std::string lowerStem(std::string_view fileName) {
+  std::string name(fileName);
+  const std::size_t slash = name.find_last_of("/\\");
+  if (slash != std::string::npos)
+    name.erase(0, slash + 1);
+  const std::size_t dot = name.find_last_of('.');
+  if (dot != std::string::npos && dot > 0)
+    name.erase(dot);
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return name;
+}
+
+}  // namespace
+
+std::string_view mapSlotName(MapSlot slot) {
+  return kSlots[std::size_t(slot)].name;
+}
+std::string_view mapSlotLabel(MapSlot slot) {
+  return kSlots[std::size_t(slot)].label;
+}
+
+std::optional<MapSlot> findMapSlot(std::string_view name) {
+  for (MapSlot slot : kAllMapSlots) {
+    if (mapSlotName(slot) == name)
+      return slot;
+  }
+  return std::nullopt;
+}
+
+ColorSpace mapSlotColorSpace(MapSlot slot) {
+  return slot == MapSlot::Color ? ColorSpace::Srgb : ColorSpace::Linear;
+}
+
+std::optional<MapSlot> guessMapSlotFromFileName(std::string_view fileName) {
+  // Split the stem into words at separators, so "rock_nor_gl" matches "nor" but "minor" does
+  // not. The last matching word wins: "brick_normal_height" is a height map of bricks.
+  const std::string stem = lowerStem(fileName);
+  std::optional<MapSlot> found;
+  std::size_t start = 0;
+  while (start <= stem.size()) {
+    std::size_t end = stem.find_first_of("_-. ", start);
+    if (end == std::string::npos)
+      end = stem.size();
+    const std::string_view word(stem.data() + start, end - start);
+    for (MapSlot slot : kAllMapSlots) {
+      const auto& hints = kSlots[std::size_t(slot)].hints;
+      if (!word.empty() && std::find(hints.begin(), hints.end(), word) != hints.end()) {
+        found = slot;
+      }
+    }
+    start = end + 1;
+  }
+  return found;
+}
+
+}  // namespace relief::core::inline material

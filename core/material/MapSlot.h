@@ -1,0 +1,32 @@
+// The map slots of a material and what each one holds: its preset key, its colour space and
+// the file-name hints ("bricks_height.png") used to assign dropped files to slots.
+#pragma once
+
+#include "core/image/ColorSpace.h"
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+namespace relief::core::inline material {
+
+enum class MapSlot { Color, Normal, Height, AmbientOcclusion, Roughness, Count };
+
+constexpr std::size_t kMapSlotCount = std::size_t(MapSlot::Count);
+
+constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {
+    MapSlot::Color, MapSlot::Normal, MapSlot::Height, MapSlot::AmbientOcclusion,
+    MapSlot::Roughness};
+
+std::string_view mapSlotName(MapSlot slot);   // "color", "normal", "height", "ao", "roughness"
+std::string_view mapSlotLabel(MapSlot slot);  // "Colour", "Normal", ...
+std::optional<MapSlot> findMapSlot(std::string_view name);
+
+// Colour maps are sRGB; everything else is linear data (DESIGN.md).
+ColorSpace mapSlotColorSpace(MapSlot slot);
+
+// Guesses the slot from a file name's hints (_height, _normal, _color, _albedo, _diffuse, ...),
+// case-insensitively; nullopt when the name says nothing.
+std::optional<MapSlot> guessMapSlotFromFileName(std::string_view fileName);
+
+}  // namespace relief::core::inline material

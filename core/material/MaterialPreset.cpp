@@ -1,0 +1,417 @@
+// Preset files; see MaterialPreset.h.
+#include "core/material/MaterialPreset.h"
+
+#include "core/base/AtomicFile.h"
+#include "core/image/ImageIO.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+
+#include <algorithm>
+#include <cmath>
+
+namespace relief::core::inline material {
+namespace {
+
+QString qstr(std::string_view text) {
+  return QString::fromUtf8(text.data(), qsizetype(text.size()));
+}
+
+// Collects warnings that name the file.
+class Problems {
+ public:
+  Problems(const std::string& path, std::vector<std::string>& warnings)
+      : m_path(path), m_warnings(warnings) {}
+  void add(const std::string& message) { m_warnings.push_back(m_path + ": " + message); }
+
+ private:
+  const std::string& m_path;
+  std::vector<std::string>& m_warnings;
+};
+
+// A finite number from a JSON value within [low, high], or nullopt after a warning.
+std::optional<double> readNumber(const QJsonValue& value, const std::string& what, double low,
+                                 double high, Problems& problems) {
+  if (!value.isDouble()) {
+    problems.add(what + " should be a number; default kept");
+    return std::nullopt;
+  }
+  const double number = value.toDouble();
+  if (!std::isfinite(number)) {
+    problems.add(what + " is not a finite number; default kept");
+    return std::nullopt;
+  }
+  if (number < low || number > high) {
+    const double clamped = std::clamp(number, low, high);
+    problems.add(what + " = " + std::to_string(number) + " is outside " + std::to_string(low) +
+                 ".." + std::to_string(high) + "; clamped to " + std::to_string(clamped));
+    return clamped;
+  }
+  return number;
+}
+
+std::optional<glm::vec3> readVector(const QJsonValue& value, const std::string& what, double low,
+                                    double high, Problems& problems) {
+  const QJsonArray array = value.toArray();
+  if (!value.isArray() || array.size() != 3) {
+    problems.add(what + " should be an array of 3 numbers; default kept");
+    return std::nullopt;
+  }
+  glm::vec3 result;
+  for (int i = 0; i < 3; ++i) {
+    const auto number =
+        readNumber(array[i], what + "[" + std::to_string(i) + "]", low, high, problems);
+    if (!number)
+      return std::nullopt;
+    result[i] = float(*number);
+  }
+  return result;
+}
+
+void readParameters(const QJsonObject& object, Material& material, Problems& problems) {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    const std::string key = it.key().toStdString();
+    const std::optional<ParamId> id = findParameter(key);
+    if (!id) {
+      problems.add("unknown parameter '" + key + "' kept in the file but not used");
+      continue;
+    }
+    const ParameterSpec& spec = parameterSpec(*id);
+    if (it.value().isBool() && spec.kind == ParamKind::Bool) {
+      material.setParameter(*id, it.value().toBool() ? 1.0 : 0.0);
+    } else if (it.value().isString() && spec.kind == ParamKind::Choice) {
+      Result<double> parsed = parseOptionValue(spec, it.value().toString().toStdString());
+      if (!parsed) {
+        problems.add(parsed.error() + "; default kept");
+        continue;
+      }
+      material.setParameter(*id, parsed.value());
+    } else if (it.value().isDouble() && spec.kind != ParamKind::Choice) {
+      const auto value =
+          readNumber(it.value(), "parameter '" + key + "'", spec.minimum, spec.maximum, problems);
+      if (value)
+        material.setParameter(*id, *value);
+    } else {
+      problems.add("parameter '" + key + "' has the wrong type (expected " +
+                   (spec.kind == ParamKind::Bool     ? std::string("true or false")
+                    : spec.kind == ParamKind::Choice ? std::string("a choice name")
+                                                     : std::string("a number")) +
+                   "); default kept");
+    }
+  }
+}
+
+MapCompression readCompression(const QJsonObject& object, const std::string& slot,
+                               Problems& problems) {
+  const std::string format = object.value(QStringLiteral("format")).toString().toStdString();
+  const std::optional<TextureFormat> found = findTextureFormat(format);
+  if (!found) {
+    problems.add(slot + " map: unknown compression format '" + format + "' ignored");
+    return std::nullopt;
+  }
+  CompressionSettings compression;
+  compression.format = *found;
+  const std::string quality =
+      object.value(QStringLiteral("quality")).toString(QStringLiteral("normal")).toStdString();
+  if (const std::optional<CompressionQuality> level = findCompressionQuality(quality)) {
+    compression.quality = *level;
+  } else {
+    problems.add(slot + " map: compression quality '" + quality +
+                 "' is not fast, normal or best; normal used");
+  }
+  compression.mipmaps = object.value(QStringLiteral("mipmaps")).toBool(true);
+  return compression;
+}
+
+void readMaps(const QJsonObject& object, const std::string& path, Preset& preset,
+              Problems& problems) {
+  const QDir presetDir = QFileInfo(QString::fromStdString(path)).absoluteDir();
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    const std::string name = it.key().toStdString();
+    const std::optional<MapSlot> slot = findMapSlot(name);
+    if (!slot) {
+      problems.add("unknown map slot '" + name + "' kept in the file but not used");
+      continue;
+    }
+    const QJsonObject entry = it.value().toObject();
+    if (entry.contains(QStringLiteral("compression"))) {
+      preset.compression[std::size_t(*slot)] =
+          readCompression(entry.value(QStringLiteral("compression")).toObject(), name, problems);
+    }
+    const QString colorSpace = entry.value(QStringLiteral("colorSpace")).toString();
+    if (!colorSpace.isEmpty() && colorSpace != qstr(colorSpaceName(mapSlotColorSpace(*slot)))) {
+      problems.add(name + " map: colour space '" + colorSpace.toStdString() +
+                   "' is not supported "
+                   "for this slot; read as " +
+                   std::string(colorSpaceName(mapSlotColorSpace(*slot))));
+    }
+    const QString relative = entry.value(QStringLiteral("path")).toString();
+    if (relative.isEmpty()) {
+      problems.add("map '" + name + "' has no path");
+      continue;
+    }
+    const std::string mapPath = QDir::cleanPath(presetDir.absoluteFilePath(relative)).toStdString();
+    Result<Image> image = loadImage(mapPath);
+    if (!image) {
+      problems.add(name + " map not loaded: " + image.error());
+      continue;
+    }
+    preset.material.setMap(*slot, std::make_shared<Image>(std::move(image).value()), mapPath);
+  }
+}
+
+void readView(const QJsonObject& object, const std::string& path, ViewState& view,
+              Problems& problems) {
+  const QDir presetDir = QFileInfo(QString::fromStdString(path)).absoluteDir();
+  if (object.contains(QStringLiteral("mesh"))) {
+    const QString mesh = object.value(QStringLiteral("mesh")).toString();
+    // Primitives by name; anything with an extension is a file relative to the preset.
+    view.mesh = QFileInfo(mesh).suffix().isEmpty()
+                    ? mesh.toStdString()
+                    : QDir::cleanPath(presetDir.absoluteFilePath(mesh)).toStdString();
+  }
+  if (object.contains(QStringLiteral("camera"))) {
+    const QJsonObject camera = object.value(QStringLiteral("camera")).toObject();
+    OrbitCamera result;
+    if (auto v =
+            readNumber(camera.value(QStringLiteral("yaw")), "view.camera.yaw", -360, 360, problems))
+      result.yawDeg = float(*v);
+    if (auto v = readNumber(camera.value(QStringLiteral("pitch")), "view.camera.pitch",
+                            OrbitCamera::kMinPitchDeg, OrbitCamera::kMaxPitchDeg, problems))
+      result.pitchDeg = float(*v);
+    if (auto v = readNumber(camera.value(QStringLiteral("distance")), "view.camera.distance", 0.05,
+                            500, problems))
+      result.distance = float(*v);
+    if (auto v =
+            readNumber(camera.value(QStringLiteral("fov")), "view.camera.fov", 5, 120, problems))
+      result.fovYDeg = float(*v);
+    if (auto v = readVector(camera.value(QStringLiteral("target")), "view.camera.target", -1e4, 1e4,
+                            problems))
+      result.target = *v;
+    view.camera = result;
+  }
+  if (object.contains(QStringLiteral("light"))) {
+    const QJsonObject light = object.value(QStringLiteral("light")).toObject();
+    DirectionalLight result;
+    if (auto v = readNumber(light.value(QStringLiteral("azimuth")), "view.light.azimuth", -360, 360,
+                            problems))
+      result.azimuthDeg = float(*v);
+    if (auto v = readNumber(light.value(QStringLiteral("elevation")), "view.light.elevation", -90,
+                            90, problems))
+      result.elevationDeg = float(*v);
+    if (auto v =
+            readVector(light.value(QStringLiteral("color")), "view.light.color", 0, 16, problems))
+      result.color = *v;
+    if (auto v = readNumber(light.value(QStringLiteral("intensity")), "view.light.intensity", 0,
+                            100, problems))
+      result.intensity = float(*v);
+    if (auto v = readNumber(light.value(QStringLiteral("ambient")), "view.light.ambient", 0, 1,
+                            problems))
+      result.ambient = float(*v);
+    view.light = result;
+  }
+}
+
+// Brings an older file's JSON to the current version. Version 1 has no compression choices
+// and no view; nothing in it changed meaning, so only the version number moves.
+QJsonObject migrate(QJsonObject root, int fromVersion) {
+  if (fromVersion < 2)
+    root.insert(QStringLiteral("version"), 2);
+  return root;
+}
+
+// A float as the shortest decimal that reads back as the same float, so files say 0.12 and
+// not 0.11999999731779099 (the float's exact double value).
+double tidy(float value) {
+  for (int digits = 6; digits <= 9; ++digits) {
+    const double shorter = QString::number(double(value), 'g', digits).toDouble();
+    if (float(shorter) == value)
+      return shorter;
+  }
+  return double(value);
+}
+
+QJsonArray toJson(const glm::vec3& v) {
+  return QJsonArray{tidy(v.x), tidy(v.y), tidy(v.z)};
+}
+
+// Values outside 0..1 (EXR heights, say) would be clipped by a PNG.
+bool needsFloat(const Image& image) {
+  const auto [low, high] = std::minmax_element(image.data(), image.data() + image.valueCount());
+  return image.valueCount() > 0 && (*low < 0.0f || *high > 1.0f);
+}
+
+}  // namespace
+
+Result<LoadedPreset> loadPreset(const std::string& path) {
+  QFile file(QString::fromStdString(path));
+  if (!file.exists())
+    return makeError(path + ": file not found");
+  if (!file.open(QIODevice::ReadOnly)) {
+    return makeError(path + ": cannot open (" + file.errorString().toStdString() + ")");
+  }
+  QJsonParseError parseError;
+  const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
+  if (parseError.error != QJsonParseError::NoError) {
+    return makeError(path + ": not a valid preset: " + parseError.errorString().toStdString() +
+                     " at byte " + std::to_string(parseError.offset));
+  }
+  if (!document.isObject()) {
+    return makeError(path + ": not a valid preset: the top level is not a JSON object");
+  }
+  QJsonObject root = document.object();
+  if (root.value(QStringLiteral("format")).toString() != qstr(kPresetFormatName)) {
+    return makeError(path + ": not a Relief preset (\"format\" is not \"" +
+                     std::string(kPresetFormatName) + "\")");
+  }
+  const QJsonValue versionValue = root.value(QStringLiteral("version"));
+  const double version = versionValue.toDouble(-1);
+  if (!versionValue.isDouble() || version != std::floor(version) || version < 1) {
+    return makeError(path + ": \"version\" must be a positive integer");
+  }
+  if (version > kPresetVersion) {
+    return makeError(path + ": written by a newer Relief (preset version " +
+                     std::to_string(int(version)) + "; this program reads up to " +
+                     std::to_string(kPresetVersion) + ")");
+  }
+
+  LoadedPreset loaded;
+  loaded.fileVersion = int(version);
+  root = migrate(root, int(version));
+  Problems problems(path, loaded.warnings);
+  Preset& preset = loaded.preset;
+  preset.preserved = root;
+  Material& material = preset.material;
+  material.setName(root.value(QStringLiteral("name"))
+                       .toString(QFileInfo(QString::fromStdString(path)).completeBaseName())
+                       .toStdString());
+  if (root.contains(QStringLiteral("technique"))) {
+    const std::string name = root.value(QStringLiteral("technique")).toString().toStdString();
+    if (const std::optional<Technique> technique = findTechnique(name)) {
+      material.setTechnique(*technique);
+    } else {
+      problems.add("unknown technique '" + name + "'; using " +
+                   std::string(techniqueName(material.technique())));
+    }
+  }
+  readParameters(root.value(QStringLiteral("parameters")).toObject(), material, problems);
+  readMaps(root.value(QStringLiteral("maps")).toObject(), path, preset, problems);
+  readView(root.value(QStringLiteral("view")).toObject(), path, preset.view, problems);
+  return loaded;
+}
+
+Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
+  const QFileInfo presetFile(QString::fromStdString(path));
+  const QDir presetDir = presetFile.absoluteDir();
+  const Material& material = preset.material;
+  SavedPreset saved;
+
+  // Start from what was read, so unknown keys (top level, per map, per parameter) survive.
+  QJsonObject root = preset.preserved;
+  root.insert(QStringLiteral("format"), qstr(kPresetFormatName));
+  root.insert(QStringLiteral("version"), kPresetVersion);
+  if (!material.name().empty()) {
+    root.insert(QStringLiteral("name"), QString::fromStdString(material.name()));
+  }
+  QJsonObject maps = root.value(QStringLiteral("maps")).toObject();
+  for (MapSlot slot : kAllMapSlots) {
+    const QString key = qstr(mapSlotName(slot));
+    const MaterialMap& map = material.map(slot);
+    if (!map.image) {
+      maps.remove(key);
+      continue;
+    }
+    std::string mapPath = map.sourcePath;
+    if (mapPath.empty()) {
+      // Generated in the editor: write it beside the preset, at full precision.
+      const bool floating = needsFloat(*map.image);
+      const QString name = presetFile.completeBaseName() + QLatin1Char('_') + key +
+                           (floating ? QStringLiteral(".exr") : QStringLiteral(".png"));
+      mapPath = presetDir.absoluteFilePath(name).toStdString();
+      const SampleFormat format = floating                 ? SampleFormat::Float
+                                  : slot == MapSlot::Color ? SampleFormat::UInt8
+                                                           : SampleFormat::UInt16;
+      if (Status written = saveImage(*map.image, mapPath, format); !written) {
+        return makeError(path + ": the generated " + key.toStdString() + " map could not be " +
+                         "written, so the preset was not saved: " + written.error());
+      }
+      saved.writtenMaps.emplace_back(slot, mapPath);
+    }
+    QJsonObject entry = maps.value(key).toObject();
+    entry.insert(QStringLiteral("path"),
+                 presetDir.relativeFilePath(QString::fromStdString(mapPath)));
+    entry.insert(QStringLiteral("colorSpace"), qstr(colorSpaceName(mapSlotColorSpace(slot))));
+    const MapCompression& compression = preset.compression[std::size_t(slot)];
+    if (!compression) {
+      entry.remove(QStringLiteral("compression"));
+    } else {
+      entry.insert(
+          QStringLiteral("compression"),
+          QJsonObject{
+              {QStringLiteral("format"), qstr(textureFormatInfo(compression->format).name)},
+              {QStringLiteral("quality"), qstr(compressionQualityName(compression->quality))},
+              {QStringLiteral("mipmaps"), compression->mipmaps}});
+    }
+    maps.insert(key, entry);
+  }
+  root.insert(QStringLiteral("maps"), maps);
+  root.insert(QStringLiteral("technique"), qstr(techniqueName(material.technique())));
+  QJsonObject parameters = root.value(QStringLiteral("parameters")).toObject();
+  for (const ParameterSpec& spec : allParameters()) {
+    const double value = material.parameter(spec.id);
+    switch (spec.kind) {
+      case ParamKind::Bool:
+        parameters.insert(qstr(spec.name), value != 0.0);
+        break;
+      case ParamKind::Choice:
+        parameters.insert(qstr(spec.name), qstr(spec.choices[std::size_t(value)]));
+        break;
+      default:
+        parameters.insert(qstr(spec.name), value);
+    }
+  }
+  root.insert(QStringLiteral("parameters"), parameters);
+
+  QJsonObject view = root.value(QStringLiteral("view")).toObject();
+  if (!preset.view.mesh.empty()) {
+    const QString mesh = QString::fromStdString(preset.view.mesh);
+    view.insert(QStringLiteral("mesh"),
+                QFileInfo(mesh).isAbsolute() ? presetDir.relativeFilePath(mesh) : mesh);
+  }
+  if (preset.view.camera) {
+    const OrbitCamera& c = *preset.view.camera;
+    view.insert(QStringLiteral("camera"),
+                QJsonObject{{QStringLiteral("yaw"), tidy(c.yawDeg)},
+                            {QStringLiteral("pitch"), tidy(c.pitchDeg)},
+                            {QStringLiteral("distance"), tidy(c.distance)},
+                            {QStringLiteral("fov"), tidy(c.fovYDeg)},
+                            {QStringLiteral("target"), toJson(c.target)}});
+  }
+  if (preset.view.light) {
+    const DirectionalLight& l = *preset.view.light;
+    view.insert(QStringLiteral("light"),
+                QJsonObject{{QStringLiteral("azimuth"), tidy(l.azimuthDeg)},
+                            {QStringLiteral("elevation"), tidy(l.elevationDeg)},
+                            {QStringLiteral("color"), toJson(l.color)},
+                            {QStringLiteral("intensity"), tidy(l.intensity)},
+                            {QStringLiteral("ambient"), tidy(l.ambient)}});
+  }
+  if (view.isEmpty()) {
+    root.remove(QStringLiteral("view"));
+  } else {
+    root.insert(QStringLiteral("view"), view);
+  }
+
+  const QByteArray bytes = QJsonDocument(root).toJson(QJsonDocument::Indented);
+  if (Status written =
+          writeFileAtomically(path, std::string_view(bytes.constData(), std::size_t(bytes.size())));
+      !written) {
+    return makeError(written.error());
+  }
+  return saved;
+}
+
+}  // namespace relief::core::inline material

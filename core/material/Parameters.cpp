@@ -1,0 +1,167 @@
+// The parameter table; see Parameters.h. Every number an artist can tune is declared here
+// once, with the reference it comes from where there is one.
+#include "core/material/Parameters.h"
+
+namespace relief::core::inline material {
+namespace {
+
+constexpr std::string_view kRelief = "Relief";
+constexpr std::string_view kSampling = "Sampling";
+constexpr std::string_view kShadows = "Self-shadowing";
+constexpr std::string_view kMapping = "Mapping";
+constexpr std::string_view kSurface = "Surface";
+
+constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+// When it has an effect and which uniform carries it ("" for a shader-variant switch).
+struct Binding {
+  ParamUse use = ParamUse::Always;
+  std::string_view uniform;
+  double uniformScale = 1.0;
+};
+
+ParameterSpec parameter(ParamId id, std::string_view group, Binding binding, OptionSpec option) {
+  ParameterSpec spec;
+  static_cast<OptionSpec&>(spec) = std::move(option);
+  spec.id = id;
+  spec.group = group;
+  spec.use = binding.use;
+  spec.uniform = binding.uniform;
+  spec.uniformScale = binding.uniformScale;
+  return spec;
+}
+
+std::vector<ParameterSpec> buildTable() {
+  // clang-format off
+  return {
+    parameter(ParamId::HeightScale, kRelief, {ParamUse::Always, "uHeightScale"}, numberOption(
+        "heightScale", "Height scale", "UV units (fractions of the texture width)",
+        0.0, 0.25, 0.04, 3,
+        "Depth of the relief: heights 0..1 span this many texture widths. The surface height "
+        "is h * heightScale + heightBias (references 000 and 004).")),
+    parameter(ParamId::HeightBias, kRelief, {ParamUse::Always, "uHeightBias"}, numberOption(
+        "heightBias", "Height bias", "UV units", -0.25, 0.25, -0.04, 3,
+        "Moves the relief relative to the mesh surface (the reference plane of the marching "
+        "techniques). -heightScale puts the top (h = 1) on the surface, as in POM; "
+        "-heightScale/2 centres it, as in reference 004 (h * 0.04 - 0.02).")),
+    parameter(ParamId::HeightIsDepth, kRelief, {ParamUse::Always, "uHeightIsDepth"}, flagOption(
+        "heightIsDepth", "Height map is a depth map", false,
+        "Read the height map as depth (white = deepest), as some tools export it.")),
+    parameter(ParamId::HeightInNormalAlpha, kRelief, {ParamUse::Always, ""}, flagOption(
+        "heightInNormalAlpha", "Height in normal map alpha", false,
+        "Take the height from the normal map's alpha channel instead of the height map (the "
+        "packed layout of references 001 and 003).")),
+    parameter(ParamId::MinSamples, kSampling, {ParamUse::Marching, "uMinSamples"}, integerOption(
+        "minSamples", "Min samples", "samples", 1, 256, 8,
+        "Height samples along the view ray when looking straight at the surface; the count "
+        "grows toward maxSamples as the view grazes (reference 001).")),
+    parameter(ParamId::MaxSamples, kSampling, {ParamUse::Marching, "uMaxSamples"}, integerOption(
+        "maxSamples", "Max samples", "samples", 1, 256, 32,
+        "Height samples along the view ray at grazing angles (reference 001). More samples "
+        "catch thinner features and cost more.")),
+    parameter(ParamId::RefinementSteps, kSampling, {ParamUse::Refinement, "uRefinementSteps"}, integerOption(
+        "refinementSteps", "Refinement steps", "binary search steps", 0, 16, 5,
+        "Relief mapping only: binary search steps after the linear search; each halves the "
+        "remaining error.")),
+    parameter(ParamId::LodFade, kSampling, {ParamUse::Always, "uLodFade"}, numberOption(
+        "lodFade", "Fade at mip level", "mip levels", 0.0, 12.0, 0.0, 1,
+        "Fades the relief out to plain normal mapping where the height map is sampled at this "
+        "mip level (far away or at grazing angles), over the level before it. Saves the "
+        "marching cost where it cannot be seen. 0 never fades.")),
+    parameter(ParamId::ShadowMode, kShadows, {ParamUse::Always, ""}, choiceOption(
+        "shadowMode", "Shadows", {"off", "hard", "soft"}, 2,
+        "Self-shadowing by marching from the visible point toward the light (reference 003, "
+        "1.3): hard is lit or shadowed, soft estimates a penumbra (Tatarchuk).")),
+    parameter(ParamId::ShadowStrength, kShadows, {ParamUse::Shadows, "uShadowStrength"}, numberOption(
+        "shadowStrength", "Shadow strength", "fraction of direct light removed",
+        0.0, 1.0, 0.8, 2,
+        "How dark self-shadows are: 0 has no effect, 1 removes all direct light.")),
+    parameter(ParamId::ShadowSamples, kShadows, {ParamUse::Shadows, "uShadowSamples"}, integerOption(
+        "shadowSamples", "Shadow samples", "samples", 1, 128, 16,
+        "Height samples along the ray toward the light.")),
+    parameter(ParamId::ShadowSoftness, kShadows, {ParamUse::SoftShadows, "uShadowSoftness", kRadiansPerDegree}, numberOption(
+        "shadowSoftness", "Light size", "degrees (angular diameter of the light)",
+        0.0, 45.0, 8.0, 1,
+        "Soft shadows: the apparent size of the light. Larger lights give wider penumbras; 0 "
+        "gives hard edges.")),
+    parameter(ParamId::ShadowLimit, kShadows, {ParamUse::Shadows, "uShadowLimit"}, flagOption(
+        "shadowLimit", "Limit shadow length", false,
+        "Welsh's offset limit applied to the light ray (reference 003, 1.3): the light ray "
+        "climbs as if the light were at least 45 degrees high, so shadows of a low light stay "
+        "short instead of stretching across the surface. Off is physically exact.")),
+    parameter(ParamId::Tiling, kMapping, {ParamUse::Always, "uTiling"}, numberOption(
+        "tiling", "Tiling", "repeats across the mesh UV range", 0.1, 16.0, 1.0, 2,
+        "How many times the maps repeat across the mesh's UV range.")),
+    parameter(ParamId::UvEdge, kMapping, {ParamUse::Always, ""}, choiceOption(
+        "uvEdge", "UV edge", {"repeat", "clamp"}, 0,
+        "repeat: the relief continues across the mesh's UV border. clamp: texels displaced "
+        "outside the UV range are discarded, so a plane shows the relief's silhouette at its "
+        "edges.")),
+    parameter(ParamId::DepthOffset, kMapping, {ParamUse::Always, ""}, flagOption(
+        "depthOffset", "Write displaced depth", false,
+        "Write the depth of the displaced surface (gl_FragDepth), so it meets other geometry "
+        "where the relief really is. Disables early depth testing.")),
+    parameter(ParamId::NormalStrength, kSurface, {ParamUse::Always, "uNormalStrength"}, numberOption(
+        "normalStrength", "Normal strength", "factor on normal X/Y", 0.0, 4.0, 1.0, 2,
+        "Scales the tilt of the normal map (its X and Y) before renormalising; 0 shows the "
+        "surface flat, 1 as authored.")),
+    parameter(ParamId::NormalYDown, kSurface, {ParamUse::Always, "uNormalYDown"}, flagOption(
+        "normalYDown", "DirectX normal map (Y down)", false,
+        "Read the normal map's green channel as Y pointing down (DirectX/Unreal convention) "
+        "instead of up (OpenGL/Blender/Godot/glTF).")),
+    parameter(ParamId::Specular, kSurface, {ParamUse::Always, "uSpecular"}, numberOption(
+        "specular", "Specular", "fraction of the light colour", 0.0, 1.0, 0.25, 2,
+        "Strength of the Blinn-Phong highlight.")),
+    parameter(ParamId::Shininess, kSurface, {ParamUse::Always, "uShininess"}, numberOption(
+        "shininess", "Shininess", "Blinn-Phong exponent", 1.0, 256.0, 32.0, 0,
+        "Sharpness of the highlight: the exponent on N.H. A roughness map, when present, "
+        "scales it down per texel.")),
+  };
+  // clang-format on
+}
+
+}  // namespace
+
+std::span<const ParameterSpec> allParameters() {
+  static const std::vector<ParameterSpec> table = buildTable();
+  return table;
+}
+
+const ParameterSpec& parameterSpec(ParamId id) {
+  return allParameters()[std::size_t(id)];
+}
+
+std::optional<ParamId> findParameter(std::string_view name) {
+  for (const ParameterSpec& spec : allParameters()) {
+    if (spec.name == name) {
+      return spec.id;
+    }
+  }
+  return std::nullopt;
+}
+
+bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode shadows) {
+  switch (spec.use) {
+    case ParamUse::Always:
+      return true;
+    case ParamUse::Marching:
+      return isMarchingTechnique(technique);
+    case ParamUse::Refinement:
+      return technique == Technique::Relief;
+    case ParamUse::Shadows:
+      return shadows != ShadowMode::Off;
+    case ParamUse::SoftShadows:
+      return shadows == ShadowMode::Soft;
+  }
+  return true;
+}
+
+ParameterValues defaultParameterValues() {
+  ParameterValues values{};
+  for (const ParameterSpec& spec : allParameters()) {
+    values[std::size_t(spec.id)] = spec.defaultValue;
+  }
+  return values;
+}
+
+}  // namespace relief::core::inline material

@@ -1,0 +1,29 @@
+// The rendering techniques a material can use. The names are the CLI's --technique values
+// and the presets' "technique" key.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace relief::core::inline material {
+
+enum class Technique {
+  Normal,           // per-pixel normal mapping in tangent space (reference 004)
+  Parallax,         // Kaneko: T + h_scaled * V.xy / V.z (references 000, 004)
+  ParallaxLimited,  // Welsh's offset limiting: T + h_scaled * V.xy (references 000, 004)
+  Steep,            // layered linear search, first layer below the surface, no interpolation
+  Pom,              // parallax occlusion mapping as reference 001 gives it
+  Relief,           // linear search, then binary refinement
+};
+
+// Whether the technique marches along the view ray (and so can self-shadow and has a cost
+// that depends on the sample counts).
+bool isMarchingTechnique(Technique technique);
+
+std::span<const Technique> allTechniques();
+std::string_view techniqueName(Technique technique);
+std::string_view techniqueLabel(Technique technique);
+std::optional<Technique> findTechnique(std::string_view name);
+
+}  // namespace relief::core::inline material

@@ -1,0 +1,38 @@
+// Mesh: indexed triangles with positions, normals, UVs and tangent frames (tangent.xyz plus
+// handedness in tangent.w; bitangent = cross(N, T) * w, reference 004).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace relief::core::inline mesh {
+
+struct Vertex {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  glm::vec2 uv{0.0f};
+  glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};
+};
+
+struct Bounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+  // Largest distance of a vertex from center(): the radius of a sphere around the box centre
+  // that holds the mesh (tighter than the box's half-diagonal for round meshes).
+  float sphereRadius = 0.0f;
+  glm::vec3 center() const { return 0.5f * (min + max); }
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;  // three per triangle
+
+  std::size_t triangleCount() const { return indices.size() / 3; }
+  Bounds bounds() const;
+};
+
+}  // namespace relief::core::inline mesh

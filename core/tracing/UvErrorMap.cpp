@@ -1,0 +1,88 @@
+// UvErrorMap; see UvErrorMap.h.
+#include "core/tracing/UvErrorMap.h"
+
+#include "core/base/ParallelFor.h"
+#include "core/image/Heatmap.h"
+#include "core/tracing/ReliefTracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace relief::core::inline tracing {
+
+UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const HeightField& field,
+                             const std::function<void(int, int)>& progress,
+                             const std::atomic<bool>* cancel) {
+  UvErrorMap result;
+  const int width = finalUv.width();
+  const int height = finalUv.height();
+  result.texels = Image(width, height, 1);
+  std::atomic<int> done{0};
+  WorkControl control;
+  if (cancel)
+    control.cancel = cancel;
+  parallelFor(
+      height,
+      [&](int y) {
+        for (int x = 0; x < width; ++x) {
+          float& out = result.texels.at(x, y, 0);
+          out = -1.0f;
+          if (cancel && cancel->load())
+            continue;
+          const float* uv = finalUv.pixel(x, y);
+          const float* ray = eyeRays.pixel(x, y);
+          if (uv[3] <= 0.0f)
+            continue;
+          const double vx = ray[2], vy = ray[3];
+          const double vz = std::sqrt(std::max(0.0, 1.0 - vx * vx - vy * vy));
+          const ViewRayHit hit = traceViewRay(field, {ray[0], ray[1]}, {vx, vy, vz});
+          if (!hit.hit)
+            continue;
+          const double du = (double(uv[0]) - hit.uv.x) * field.width();
+          const double dv = (double(uv[1]) - hit.uv.y) * field.height();
+          out = float(std::hypot(du, dv));
+        }
+        const int finished = ++done;
+        if (progress)
+          progress(finished, height);
+      },
+      control);
+
+  std::vector<float> covered;
+  covered.reserve(result.texels.pixelCount());
+  for (std::size_t i = 0; i < result.texels.valueCount(); ++i) {
+    if (result.texels.data()[i] >= 0.0f)
+      covered.push_back(result.texels.data()[i]);
+  }
+  result.pixels = static_cast<long long>(covered.size());
+  if (!covered.empty()) {
+    result.mean = std::accumulate(covered.begin(), covered.end(), 0.0) / double(covered.size());
+    result.maximum = *std::max_element(covered.begin(), covered.end());
+    const auto rank = std::size_t(0.95 * double(covered.size() - 1));
+    std::nth_element(covered.begin(), covered.begin() + std::ptrdiff_t(rank), covered.end());
+    result.p95 = covered[rank];
+  }
+  return result;
+}
+
+Image colorizeErrorMap(const UvErrorMap& map, double maxTexels) {
+  Image colors(map.texels.width(), map.texels.height(), 4, ColorSpace::Srgb);
+  for (int y = 0; y < colors.height(); ++y) {
+    for (int x = 0; x < colors.width(); ++x) {
+      const float error = map.texels.at(x, y, 0);
+      float* out = colors.pixel(x, y);
+      if (error < 0.0f)
+        continue;  // transparent: not covered
+      const glm::vec3 color = heatmapColor(float(error / std::max(maxTexels, 1e-9)));
+      out[0] = color.r;
+      out[1] = color.g;
+      out[2] = color.b;
+      out[3] = 1.0f;
+    }
+  }
+  return colors;
+}
+
+}  // namespace relief::core::inline tracing

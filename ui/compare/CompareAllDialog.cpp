@@ -1,0 +1,259 @@
+// CompareAllDialog; see CompareAllDialog.h.
+#include "ui/compare/CompareAllDialog.h"
+
+#include "ui/window/QtText.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScatterSeries>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <cmath>
+
+namespace relief::ui::inline compare {
+namespace {
+
+enum Column {
+  FormatColumn,
+  BitsColumn,
+  RatioColumn,
+  QualityColumn,
+  SsimColumn,
+  DetailColumn,
+  SecondsColumn,
+  ColumnCount
+};
+
+// A cell that sorts by number rather than by text.
+class NumberItem : public QTableWidgetItem {
+ public:
+  using QTableWidgetItem::QTableWidgetItem;
+  bool operator<(const QTableWidgetItem& other) const override {
+    return data(Qt::UserRole).toDouble() < other.data(Qt::UserRole).toDouble();
+  }
+};
+
+QTableWidgetItem* sortableNumber(double value, const QString& text) {
+  auto* item = new NumberItem(text);
+  item->setData(Qt::UserRole, value);
+  item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  return item;
+}
+
+}  // namespace
+
+CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
+  setWindowTitle(tr("Compare All Formats"));
+  resize(860, 720);
+  m_runner = new CompressionRunner(this);
+  m_table = new QTableWidget(0, ColumnCount, this);
+  m_table->setHorizontalHeaderLabels({tr("Format"), tr("Bits/texel"), tr("vs RGBA8"), tr("Quality"),
+                                      tr("SSIM"), tr("Detail"), tr("Seconds")});
+  m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+  m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+  m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_table->horizontalHeader()->setSectionResizeMode(DetailColumn, QHeaderView::Stretch);
+  m_table->verticalHeader()->hide();
+
+  auto* chart = new QChart;
+  chart->legend()->hide();
+  chart->setTheme(QChart::ChartThemeDark);
+  m_chartView = new QChartView(chart, this);
+  m_chartView->setRenderHint(QPainter::Antialiasing);
+  m_chartView->setMinimumHeight(280);
+
+  m_progress = new QProgressBar(this);
+  m_progress->setRange(0, 1000);
+  m_status = new QLabel(this);
+  m_cancel = new QPushButton(tr("Cancel"), this);
+  m_use = new QPushButton(tr("Use Format"), this);
+  m_use->setEnabled(false);
+  m_use->setToolTip(tr("Set the Compress panel's format for this map to the selected row"));
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+  buttons->addButton(m_use, QDialogButtonBox::ActionRole);
+
+  auto* progressRow = new QHBoxLayout;
+  progressRow->addWidget(m_progress, 1);
+  progressRow->addWidget(m_cancel);
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(m_table, 1);
+  layout->addWidget(m_chartView, 1);
+  layout->addLayout(progressRow);
+  layout->addWidget(m_status);
+  layout->addWidget(buttons);
+
+  connect(buttons, &QDialogButtonBox::rejected, this, &CompareAllDialog::reject);
+  connect(m_cancel, &QPushButton::clicked, m_runner, &CompressionRunner::cancel);
+  connect(m_table, &QTableWidget::itemSelectionChanged, this,
+          [this] { m_use->setEnabled(selectedFormat().has_value()); });
+  connect(m_table, &QTableWidget::cellDoubleClicked, m_use, &QPushButton::click);
+  connect(m_use, &QPushButton::clicked, this, [this] {
+    if (const auto format = selectedFormat())
+      Q_EMIT formatChosen(m_slot, *format);
+  });
+  connect(m_runner, &CompressionRunner::progress, this,
+          [this](double fraction, const QString& what) {
+            m_progress->setValue(int(std::lround(fraction * 1000.0)));
+            m_status->setText(tr("Compressing %1…").arg(what));
+          });
+  connect(m_runner, &CompressionRunner::jobFinished, this,
+          [this](const core::CompressionOutcome& outcome) {
+            m_outcomes.push_back(outcome);
+            addRow(outcome);
+            updateChart();
+          });
+  connect(m_runner, &CompressionRunner::finished, this, [this] {
+    m_progress->setValue(1000);
+    m_cancel->setEnabled(false);
+    m_status->setText(
+        tr("%1 formats compared. Select one and press Use Format.").arg(m_outcomes.size()));
+  });
+  connect(m_runner, &CompressionRunner::cancelled, this, [this] {
+    m_cancel->setEnabled(false);
+    m_status->setText(tr("Cancelled after %1 formats.").arg(m_outcomes.size()));
+  });
+  connect(m_runner, &CompressionRunner::failed, this, [this](const QString& message) {
+    m_cancel->setEnabled(false);
+    m_status->setText(tr("Failed: %1").arg(message));
+  });
+}
+
+void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
+                             core::CompressionQuality quality, double heightScale) {
+  m_slot = slot;
+  m_outcomes.clear();
+  m_table->setRowCount(0);
+  m_table->setSortingEnabled(false);
+  setWindowTitle(tr("Compare All Formats: %1 map (%2x%3, quality %4)")
+                     .arg(toQString(core::mapSlotLabel(slot)))
+                     .arg(map->width())
+                     .arg(map->height())
+                     .arg(toQString(core::compressionQualityName(quality))));
+  m_table->horizontalHeaderItem(QualityColumn)
+      ->setText(slot == core::MapSlot::Normal ? tr("Mean angle (°)") : tr("PSNR (dB)"));
+  m_table->horizontalHeaderItem(DetailColumn)
+      ->setText(slot == core::MapSlot::Normal   ? tr("p99 angle, share > 2°")
+                : slot == core::MapSlot::Height ? tr("Parallax shift (texels)")
+                                                : tr("Max error"));
+  std::vector<core::CompressionJob> jobs;
+  for (core::TextureFormat format : core::formatsForSlot(slot))
+    jobs.push_back({map, slot, {format, quality, false}, heightScale});
+  m_cancel->setEnabled(true);
+  m_progress->setValue(0);
+  updateChart();
+  m_runner->start(std::move(jobs));
+}
+
+std::optional<core::TextureFormat> CompareAllDialog::selectedFormat() const {
+  const QList<QTableWidgetItem*> selected = m_table->selectedItems();
+  if (selected.isEmpty())
+    return std::nullopt;
+  const QTableWidgetItem* item = m_table->item(selected.front()->row(), FormatColumn);
+  return core::TextureFormat(item->data(Qt::UserRole).toInt());
+}
+
+void CompareAllDialog::addRow(const core::CompressionOutcome& outcome) {
+  const core::CompressionReport& report = outcome.report;
+  const core::TextureFormat format = outcome.job.settings.format;
+  m_table->setSortingEnabled(false);
+  const int row = m_table->rowCount();
+  m_table->insertRow(row);
+  auto* name = new QTableWidgetItem(toQString(core::textureFormatInfo(format).label));
+  name->setData(Qt::UserRole, int(format));
+  m_table->setItem(row, FormatColumn, name);
+  m_table->setItem(row, BitsColumn,
+                   sortableNumber(report.size->bitsPerPixel,
+                                  QString::number(report.size->bitsPerPixel, 'f', 2)));
+  m_table->setItem(row, RatioColumn,
+                   sortableNumber(report.size->ratioToRgba8,
+                                  tr("%1:1").arg(report.size->ratioToRgba8, 0, 'f', 1)));
+  if (report.normal) {
+    m_table->setItem(row, QualityColumn,
+                     sortableNumber(report.normal->meanDegrees,
+                                    QString::number(report.normal->meanDegrees, 'f', 3)));
+    m_table->setItem(
+        row, DetailColumn,
+        new QTableWidgetItem(tr("%1°, %2%")
+                                 .arg(report.normal->p99Degrees, 0, 'f', 2)
+                                 .arg(report.normal->shareAbove2Degrees * 100.0, 0, 'f', 2)));
+  } else {
+    const double psnr = std::isfinite(report.image.psnr) ? report.image.psnr : 999.0;
+    m_table->setItem(row, QualityColumn, sortableNumber(psnr, QString::number(psnr, 'f', 2)));
+    m_table->setItem(
+        row, DetailColumn,
+        new QTableWidgetItem(report.height
+                                 ? tr("mean %1, max %2")
+                                       .arg(report.height->meanTexels, 0, 'f', 3)
+                                       .arg(report.height->maxTexels, 0, 'f', 3)
+                                 : tr("%1/255").arg(report.image.maxError * 255.0, 0, 'f', 1)));
+  }
+  m_table->setItem(row, SsimColumn,
+                   sortableNumber(report.image.ssim, QString::number(report.image.ssim, 'f', 4)));
+  m_table->setItem(
+      row, SecondsColumn,
+      sortableNumber(report.encodeSeconds, QString::number(report.encodeSeconds, 'f', 2)));
+  m_table->setSortingEnabled(true);
+  if (m_outcomes.size() == 1)
+    m_table->sortByColumn(BitsColumn, Qt::AscendingOrder);
+}
+
+void CompareAllDialog::updateChart() {
+  QChart* chart = m_chartView->chart();
+  chart->removeAllSeries();
+  for (QAbstractAxis* axis : chart->axes()) {
+    chart->removeAxis(axis);  // hands the axis back to us
+    delete axis;
+  }
+  const bool normal = m_slot == core::MapSlot::Normal;
+  chart->setTitle(normal ? tr("Mean angular error against bits per texel (lower is better)")
+                         : tr("PSNR against bits per texel (higher is better)"));
+  // One series per format, so each point carries its format's name as its label (Qt 6.4 has
+  // no per-point label text).
+  std::vector<QScatterSeries*> series;
+  double low = 1e9, high = -1e9;
+  for (const core::CompressionOutcome& outcome : m_outcomes) {
+    const double y =
+        normal ? outcome.report.normal->meanDegrees : std::min(outcome.report.image.psnr, 99.0);
+    auto* point = new QScatterSeries;
+    point->setName(toQString(core::textureFormatInfo(outcome.job.settings.format).label));
+    point->setMarkerSize(10.0);
+    point->setPointLabelsVisible(true);
+    point->setPointLabelsClipping(false);
+    point->setPointLabelsFormat(
+        toQString(core::textureFormatInfo(outcome.job.settings.format).name));
+    point->append(outcome.report.size->bitsPerPixel, y);
+    chart->addSeries(point);
+    series.push_back(point);
+    low = std::min(low, y);
+    high = std::max(high, y);
+  }
+  auto* x = new QValueAxis;
+  x->setTitleText(tr("bits per texel"));
+  x->setRange(0.0, 9.0);
+  x->setTickCount(10);
+  x->setLabelFormat(QStringLiteral("%d"));
+  auto* y = new QValueAxis;
+  y->setTitleText(normal ? tr("mean angular error (°)") : tr("PSNR (dB)"));
+  if (high > low)
+    y->setRange(std::floor(low - 0.1 * (high - low)), std::ceil(high + 0.1 * (high - low)));
+  chart->addAxis(x, Qt::AlignBottom);
+  chart->addAxis(y, Qt::AlignLeft);
+  for (QScatterSeries* point : series) {
+    point->attachAxis(x);
+    point->attachAxis(y);
+  }
+}
+
+void CompareAllDialog::reject() {
+  m_runner->cancel();
+  QDialog::reject();
+}
+
+}  // namespace relief::ui::inline compare

@@ -1,0 +1,62 @@
+// CompareAllDialog: "compare all formats" for one map. Compresses it in every format that can
+// hold it (in the background, with progress and cancel), then lists size and quality in a
+// sortable table and plots quality against bits per pixel (QtCharts), one labelled point per
+// format. Choosing a row and "Use Format" hands the format back to the Compress panel.
+#pragma once
+
+#include "core/compression/Compressor.h"
+#include "ui/tasks/CompressionRunner.h"
+
+#include <QDialog>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+
+class QChartView;
+
+namespace relief::ui::inline compare {
+
+class CompareAllDialog : public QDialog {
+  Q_OBJECT
+
+ public:
+  explicit CompareAllDialog(QWidget* parent = nullptr);
+
+  // Starts the comparison of `map` (in `slot`) at `quality`.
+  void start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
+             core::CompressionQuality quality, double heightScale);
+
+  QTableWidget* table() const { return m_table; }
+  CompressionRunner* runner() const { return m_runner; }
+  QChartView* chartView() const { return m_chartView; }
+  const std::vector<core::CompressionOutcome>& outcomes() const { return m_outcomes; }
+  std::optional<core::TextureFormat> selectedFormat() const;
+
+ Q_SIGNALS:
+  void formatChosen(relief::core::MapSlot slot, relief::core::TextureFormat format);
+
+ protected:
+  void reject() override;  // Close also cancels
+
+ private:
+  void addRow(const core::CompressionOutcome& outcome);
+  void updateChart();
+
+  CompressionRunner* m_runner;
+  QTableWidget* m_table;
+  QChartView* m_chartView;
+  QProgressBar* m_progress;
+  QLabel* m_status;
+  QPushButton* m_cancel;
+  QPushButton* m_use;
+  core::MapSlot m_slot = core::MapSlot::Color;
+  std::vector<core::CompressionOutcome> m_outcomes;
+};
+
+}  // namespace relief::ui::inline compare

@@ -1,0 +1,445 @@
+// CompressPanel; see CompressPanel.h.
+#include "ui/panels/CompressPanel.h"
+
+#include "core/compression/TextureFile.h"
+#include "ui/compare/CompareAllDialog.h"
+#include "ui/compare/CompareDialog.h"
+#include "ui/document/MaterialDocument.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/window/QtText.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QGridLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace relief::ui::inline panels {
+namespace {
+
+constexpr int kUncompressed = -1;
+
+QString qualityText(const core::CompressionOutcome& outcome) {
+  const core::CompressionReport& report = outcome.report;
+  if (report.normal) {
+    return QObject::tr("%1° mean, %2° p99")
+        .arg(report.normal->meanDegrees, 0, 'f', 2)
+        .arg(report.normal->p99Degrees, 0, 'f', 1);
+  }
+  QString text = std::isfinite(report.image.psnr)
+                     ? QObject::tr("%1 dB").arg(report.image.psnr, 0, 'f', 1)
+                     : QObject::tr("exact");
+  text += QObject::tr(", SSIM %1").arg(report.image.ssim, 0, 'f', 3);
+  if (report.height)
+    text += QObject::tr(", shift %1 tx").arg(report.height->meanTexels, 0, 'f', 3);
+  return text;
+}
+
+}  // namespace
+
+CompressPanel::CompressPanel(MaterialDocument* document, ViewportWidget* viewport, QWidget* parent)
+    : QWidget(parent), m_document(document), m_viewport(viewport) {
+  m_runner = new CompressionRunner(this);
+  auto* grid = new QGridLayout;
+  grid->addWidget(new QLabel(tr("<b>Map</b>"), this), 0, 0);
+  grid->addWidget(new QLabel(tr("<b>Format</b>"), this), 0, 1);
+  grid->addWidget(new QLabel(tr("<b>Quality</b>"), this), 0, 2);
+  int gridRow = 1;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    Row& row = m_rows[std::size_t(slot)];
+    row.label = new QLabel(toQString(core::mapSlotLabel(slot)), this);
+    row.format = new QComboBox(this);
+    row.format->addItem(tr("Uncompressed"), kUncompressed);
+    for (core::TextureFormat format : core::formatsForSlot(slot)) {
+      const core::TextureFormatInfo& info = core::textureFormatInfo(format);
+      row.format->addItem(
+          tr("%1 — %2 bpp").arg(toQString(info.label)).arg(core::bitsPerPixel(format), 0, 'g', 3),
+          int(format));
+    }
+    row.format->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    row.format->setMinimumContentsLength(10);
+    row.quality = new QComboBox(this);
+    for (core::CompressionQuality quality :
+         {core::CompressionQuality::Fast, core::CompressionQuality::Normal,
+          core::CompressionQuality::Best}) {
+      row.quality->addItem(toQString(core::compressionQualityName(quality)), int(quality));
+    }
+    row.quality->setToolTip(
+        tr("fast: range fit / astcenc fast; normal: cluster fit / medium; "
+           "best: iterative cluster fit / thorough"));
+    grid->addWidget(row.label, gridRow, 0);
+    grid->addWidget(row.format, gridRow, 1);
+    grid->addWidget(row.quality, gridRow, 2);
+    ++gridRow;
+    connect(row.format, &QComboBox::currentIndexChanged, this, [this, slot] { writeChoice(slot); });
+    connect(row.quality, &QComboBox::currentIndexChanged, this,
+            [this, slot] { writeChoice(slot); });
+  }
+  grid->setColumnStretch(1, 1);
+
+  m_mipmaps = new QCheckBox(tr("Mipmaps"), this);
+  m_mipmaps->setToolTip(
+      tr("A full mip chain: colour filtered in linear light, normals "
+         "renormalised, heights averaged; each level compressed"));
+  m_mipmaps->setChecked(true);
+  m_compress = new QPushButton(tr("Compress"), this);
+  m_compress->setToolTip(tr("Compress the chosen maps in the background (Ctrl+Shift+K)"));
+  m_cancel = new QPushButton(tr("Cancel"), this);
+  m_cancel->setEnabled(false);
+  m_progress = new QProgressBar(this);
+  m_progress->setRange(0, 1000);
+  m_progress->setTextVisible(false);
+  m_status = new QLabel(tr("Choose a format per map, then Compress."), this);
+  m_status->setWordWrap(true);
+
+  m_view = new QComboBox(this);
+  m_view->addItem(tr("Original maps"), int(ViewportWidget::CompressedView::Original));
+  m_view->addItem(tr("Compressed maps"), int(ViewportWidget::CompressedView::Compressed));
+  m_view->addItem(tr("Wipe: original | compressed"), int(ViewportWidget::CompressedView::Wipe));
+  m_view->setToolTip(tr("What the 3D viewport shows; in the wipe, drag the divider"));
+  m_view->setEnabled(false);
+
+  m_results = new QTableWidget(0, 4, this);
+  m_results->setHorizontalHeaderLabels({tr("Map"), tr("Format"), tr("Size"), tr("Quality")});
+  m_results->setSelectionBehavior(QAbstractItemView::SelectRows);
+  m_results->setSelectionMode(QAbstractItemView::SingleSelection);
+  m_results->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_results->verticalHeader()->hide();
+  m_results->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  m_results->horizontalHeader()->setStretchLastSection(true);
+  m_results->setWordWrap(true);
+  m_results->setMinimumHeight(110);
+
+  m_compareButton = new QPushButton(tr("Compare 2D…"), this);
+  m_compareButton->setToolTip(tr("Wipe, side by side and difference views of the selected map"));
+  m_compareAllButton = new QPushButton(tr("Compare All Formats…"), this);
+  m_compareAllButton->setToolTip(
+      tr("Compress the selected map (or the first one) in every format and chart the results"));
+  m_saveButton = new QPushButton(tr("Save As…"), this);
+  m_saveButton->setToolTip(tr("Save the selected compressed map as DDS or KTX2"));
+
+  auto* actions = new QHBoxLayout;
+  actions->addWidget(m_compress);
+  actions->addWidget(m_cancel);
+  auto* viewRow = new QHBoxLayout;
+  viewRow->addWidget(new QLabel(tr("Viewport:"), this));
+  viewRow->addWidget(m_view, 1);
+  auto* rowButtons = new QHBoxLayout;
+  rowButtons->addWidget(m_compareButton);
+  rowButtons->addWidget(m_compareAllButton);
+  rowButtons->addWidget(m_saveButton);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(grid);
+  layout->addWidget(m_mipmaps);
+  layout->addLayout(actions);
+  layout->addWidget(m_progress);
+  layout->addWidget(m_status);
+  layout->addLayout(viewRow);
+  layout->addWidget(m_results, 1);
+  layout->addLayout(rowButtons);
+
+  connect(m_compress, &QPushButton::clicked, this, &CompressPanel::compress);
+  connect(m_cancel, &QPushButton::clicked, this, &CompressPanel::cancel);
+  connect(m_compareButton, &QPushButton::clicked, this, &CompressPanel::openCompare);
+  connect(m_compareAllButton, &QPushButton::clicked, this, &CompressPanel::openCompareAll);
+  connect(m_saveButton, &QPushButton::clicked, this, &CompressPanel::saveSelected);
+  connect(m_results, &QTableWidget::cellDoubleClicked, this, &CompressPanel::openCompare);
+  connect(m_view, &QComboBox::currentIndexChanged, this, [this] {
+    m_viewport->setCompressedView(ViewportWidget::CompressedView(m_view->currentData().toInt()));
+  });
+  connect(m_runner, &CompressionRunner::progress, this,
+          [this](double fraction, const QString& what) {
+            m_progress->setValue(int(std::lround(fraction * 1000.0)));
+            m_status->setText(tr("Compressing %1…").arg(what));
+          });
+  connect(m_runner, &CompressionRunner::finished, this,
+          [this](const std::vector<core::CompressionOutcome>& outcomes) {
+            m_compress->setEnabled(true);
+            m_cancel->setEnabled(false);
+            m_progress->setValue(1000);
+            double seconds = 0.0;
+            for (const core::CompressionOutcome& outcome : outcomes) {
+              m_outcomes[outcome.job.slot] = outcome;
+              seconds += outcome.report.encodeSeconds;
+            }
+            dropStalePreviews();
+            QString status = tr("Compressed %n map(s) in %1 s.", nullptr, int(outcomes.size()))
+                                 .arg(seconds, 0, 'f', 2);
+            for (const core::CompressionOutcome& outcome : outcomes) {
+              for (const std::string& warning : outcome.warnings) {
+                status += tr(" The %1 map: %2.")
+                              .arg(toQString(core::mapSlotLabel(outcome.job.slot)).toLower(),
+                                   QString::fromStdString(warning));
+              }
+            }
+            m_status->setText(status);
+            if (m_view->currentIndex() == 0)
+              m_view->setCurrentIndex(2);  // show the wipe straight away
+            showOutcomes();
+            updateViewport();
+          });
+  connect(m_runner, &CompressionRunner::cancelled, this, [this] {
+    m_compress->setEnabled(true);
+    m_cancel->setEnabled(false);
+    m_progress->setValue(0);
+    m_status->setText(tr("Cancelled; the previous results are unchanged."));
+  });
+  connect(m_runner, &CompressionRunner::failed, this, [this](const QString& message) {
+    m_compress->setEnabled(true);
+    m_cancel->setEnabled(false);
+    m_progress->setValue(0);
+    m_status->setText(tr("Compression failed: %1").arg(message));
+  });
+  connect(m_document, &MaterialDocument::materialReset, this, [this] {
+    syncFromDocument();
+    dropStalePreviews();
+  });
+  connect(m_document, &MaterialDocument::mapChanged, this, [this] {
+    syncFromDocument();
+    dropStalePreviews();
+  });
+  connect(m_document, &MaterialDocument::compressionChanged, this, [this] { syncFromDocument(); });
+  syncFromDocument();
+  showOutcomes();
+}
+
+CompressPanel::~CompressPanel() {
+  m_runner->cancel();
+  m_runner->waitForFinished();
+}
+
+void CompressPanel::syncFromDocument() {
+  m_syncing = true;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    Row& row = m_rows[std::size_t(slot)];
+    const bool present = m_document->material().hasMap(slot);
+    row.label->setEnabled(present);
+    row.format->setEnabled(present);
+    row.quality->setEnabled(present);
+    const core::MapCompression& choice = m_document->compression(slot);
+    const int formatIndex = row.format->findData(choice ? int(choice->format) : kUncompressed);
+    row.format->setCurrentIndex(std::max(0, formatIndex));
+    row.quality->setCurrentIndex(
+        row.quality->findData(int(choice ? choice->quality : core::CompressionQuality::Normal)));
+  }
+  m_syncing = false;
+}
+
+void CompressPanel::writeChoice(core::MapSlot slot) {
+  if (m_syncing)
+    return;
+  const Row& row = m_rows[std::size_t(slot)];
+  const int format = row.format->currentData().toInt();
+  core::MapCompression choice;
+  if (format != kUncompressed) {
+    // A preset's choice keeps its mipmap flag; a new one has mipmaps, as shipped textures do.
+    const core::MapCompression& previous = m_document->compression(slot);
+    choice = core::CompressionSettings{core::TextureFormat(format),
+                                       core::CompressionQuality(row.quality->currentData().toInt()),
+                                       previous ? previous->mipmaps : true};
+  }
+  m_document->setCompression(slot, choice);
+}
+
+void CompressPanel::compress() {
+  const core::Material& material = m_document->material();
+  bool anyChosen = false;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    anyChosen =
+        anyChosen || (material.hasMap(slot) &&
+                      m_rows[std::size_t(slot)].format->currentData().toInt() != kUncompressed);
+  }
+  if (!anyChosen) {
+    // Nothing chosen yet: the usual choices (BC1 or BC3 colour, BC5 normals, BC4 data), as one
+    // undo step.
+    m_document->undoStack()->beginMacro(tr("Suggested compression formats"));
+    for (core::MapSlot slot : core::kAllMapSlots) {
+      if (const core::Image* image = material.image(slot)) {
+        Row& row = m_rows[std::size_t(slot)];
+        row.format->setCurrentIndex(
+            row.format->findData(int(core::suggestedFormat(slot, image->channels()))));
+      }
+    }
+    m_document->undoStack()->endMacro();
+  }
+  std::vector<core::CompressionJob> jobs;
+  const double heightScale = material.parameter(core::ParamId::HeightScale);
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    const Row& row = m_rows[std::size_t(slot)];
+    const int format = row.format->currentData().toInt();
+    if (!material.hasMap(slot) || format == kUncompressed)
+      continue;
+    jobs.push_back(
+        {material.map(slot).image,
+         slot,
+         {core::TextureFormat(format), core::CompressionQuality(row.quality->currentData().toInt()),
+          m_mipmaps->isChecked()},
+         heightScale});
+  }
+  if (jobs.empty()) {
+    m_status->setText(tr("The material has no maps to compress."));
+    return;
+  }
+  m_compress->setEnabled(false);
+  m_cancel->setEnabled(true);
+  m_progress->setValue(0);
+  m_runner->start(std::move(jobs));
+}
+
+void CompressPanel::cancel() {
+  m_runner->cancel();
+}
+
+void CompressPanel::dropStalePreviews() {
+  // A preview belongs to the map it was made from; once the slot holds another, it is gone.
+  bool dropped = false;
+  for (auto it = m_outcomes.begin(); it != m_outcomes.end();) {
+    const bool current = m_document->material().map(it->first).image == it->second.job.map;
+    dropped = dropped || !current;
+    it = current ? std::next(it) : m_outcomes.erase(it);
+  }
+  if (dropped) {
+    showOutcomes();
+    updateViewport();
+  }
+}
+
+void CompressPanel::showOutcomes() {
+  m_results->setRowCount(0);
+  for (const auto& [slot, outcome] : m_outcomes) {
+    const int row = m_results->rowCount();
+    m_results->insertRow(row);
+    auto* name = new QTableWidgetItem(toQString(core::mapSlotLabel(slot)));
+    name->setData(Qt::UserRole, int(slot));
+    m_results->setItem(row, 0, name);
+    const core::TextureFormatInfo& info = core::textureFormatInfo(outcome.job.settings.format);
+    auto* formatItem = new QTableWidgetItem(toQString(info.name).toUpper());
+    formatItem->setToolTip(toQString(info.label));
+    m_results->setItem(row, 1, formatItem);
+    const core::SizeFigures& size = *outcome.report.size;
+    auto* sizeItem = new QTableWidgetItem(
+        tr("%1 bpp, %2:1").arg(size.bitsPerPixel, 0, 'g', 3).arg(size.ratioToSource, 0, 'g', 3));
+    sizeItem->setToolTip(tr("%1 KiB with mipmaps; %2:1 against RGBA8")
+                             .arg(double(size.bytes) / 1024.0, 0, 'f', 0)
+                             .arg(size.ratioToRgba8, 0, 'g', 3));
+    m_results->setItem(row, 2, sizeItem);
+    m_results->setItem(row, 3, new QTableWidgetItem(qualityText(outcome)));
+  }
+  m_results->resizeRowsToContents();
+  if (m_results->rowCount() > 0 && m_results->selectedItems().isEmpty())
+    m_results->selectRow(0);
+  const bool any = !m_outcomes.empty();
+  m_view->setEnabled(any);
+  m_compareButton->setEnabled(any);
+  m_saveButton->setEnabled(any);
+}
+
+void CompressPanel::updateViewport() {
+  std::vector<ViewportWidget::CompressedPreview> previews;
+  for (const auto& [slot, outcome] : m_outcomes)
+    previews.push_back({slot, outcome.job.map, outcome.texture, outcome.decoded});
+  m_viewport->setCompressedPreviews(std::move(previews));
+}
+
+std::optional<core::MapSlot> CompressPanel::selectedSlot() const {
+  const QList<QTableWidgetItem*> selected = m_results->selectedItems();
+  if (selected.isEmpty())
+    return std::nullopt;
+  return core::MapSlot(m_results->item(selected.front()->row(), 0)->data(Qt::UserRole).toInt());
+}
+
+CompareDialog* CompressPanel::compareDialog() {
+  if (!m_compareDialog)
+    m_compareDialog = new CompareDialog(this);
+  return m_compareDialog;
+}
+
+CompareAllDialog* CompressPanel::compareAllDialog() {
+  if (!m_compareAllDialog) {
+    m_compareAllDialog = new CompareAllDialog(this);
+    connect(m_compareAllDialog, &CompareAllDialog::formatChosen, this,
+            [this](core::MapSlot slot, core::TextureFormat format) {
+              Row& row = m_rows[std::size_t(slot)];
+              row.format->setCurrentIndex(row.format->findData(int(format)));
+              Q_EMIT statusMessage(tr("%1 map will be compressed as %2")
+                                       .arg(toQString(core::mapSlotLabel(slot)),
+                                            toQString(core::textureFormatInfo(format).label)));
+            });
+  }
+  return m_compareAllDialog;
+}
+
+void CompressPanel::openCompare() {
+  const std::optional<core::MapSlot> slot = selectedSlot();
+  if (!slot || !m_outcomes.count(*slot))
+    return;
+  const core::CompressionOutcome& outcome = m_outcomes.at(*slot);
+  CompareDialog* dialog = compareDialog();
+  dialog->setComparison(
+      tr("%1 map as %2")
+          .arg(toQString(core::mapSlotLabel(*slot)),
+               toQString(core::textureFormatInfo(outcome.job.settings.format).label)),
+      outcome.job.map, outcome.decoded, outcome.report);
+  dialog->show();
+  dialog->raise();
+}
+
+void CompressPanel::openCompareAll() {
+  std::optional<core::MapSlot> slot = selectedSlot();
+  if (!slot) {
+    for (core::MapSlot candidate : core::kAllMapSlots) {
+      if (m_document->material().hasMap(candidate)) {
+        slot = candidate;
+        break;
+      }
+    }
+  }
+  if (!slot) {
+    m_status->setText(tr("Load a map first: there is nothing to compare."));
+    return;
+  }
+  const Row& row = m_rows[std::size_t(*slot)];
+  CompareAllDialog* dialog = compareAllDialog();
+  dialog->start(*slot, m_document->material().map(*slot).image,
+                core::CompressionQuality(row.quality->currentData().toInt()),
+                m_document->material().parameter(core::ParamId::HeightScale));
+  dialog->show();
+  dialog->raise();
+}
+
+void CompressPanel::saveSelected() {
+  const std::optional<core::MapSlot> slot = selectedSlot();
+  if (!slot || !m_outcomes.count(*slot))
+    return;
+  const core::CompressionOutcome& outcome = m_outcomes.at(*slot);
+  const core::TextureFormat format = outcome.job.settings.format;
+  const bool dds = core::containerHolds(core::TextureContainer::Dds, format);
+  const QString filter = dds ? tr("KTX2 (*.ktx2);;DDS (*.dds)") : tr("KTX2 (*.ktx2)");
+  QString path = QFileDialog::getSaveFileName(
+      this, tr("Save Compressed %1 Map").arg(toQString(core::mapSlotLabel(*slot))),
+      QString::fromStdString(std::string(core::mapSlotName(*slot)) + "_" +
+                             std::string(core::textureFormatInfo(format).name) + ".ktx2"),
+      filter);
+  if (path.isEmpty())
+    return;
+  if (!core::containerForPath(path.toStdString()))
+    path += QStringLiteral(".ktx2");
+  if (core::Status saved = core::saveCompressedTexture(*outcome.texture, path.toStdString());
+      !saved) {
+    QMessageBox::warning(this, tr("Save Compressed Map"), QString::fromStdString(saved.error()));
+    return;
+  }
+  Q_EMIT statusMessage(tr("Saved %1").arg(path));
+}
+
+}  // namespace relief::ui::inline panels

@@ -1,0 +1,100 @@
+// CompressPanel: compressing the material's maps into GPU formats to judge them. A format and
+// quality per map (kept in the document, so presets save them, one undo step per change), full
+// mip chains optional; Compress runs in the background with progress and Cancel and never
+// touches the maps themselves. The results (size, rate, PSNR/SSIM, angular error for normals,
+// parallax shift for heights) are listed; the viewport shows the original, the compressed maps
+// or a wipe between them; a row opens the 2D compare view, "compare all formats", or is saved
+// as DDS or KTX2.
+#pragma once
+
+#include "core/material/MapSlot.h"
+#include "ui/tasks/CompressionRunner.h"
+
+#include <QWidget>
+
+#include <array>
+#include <map>
+#include <optional>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+
+namespace relief::ui::inline compare {
+class CompareAllDialog;
+class CompareDialog;
+}  // namespace relief::ui::inline compare
+namespace relief::ui::inline document {
+class MaterialDocument;
+}
+namespace relief::ui::inline viewport {
+class ViewportWidget;
+}
+
+namespace relief::ui::inline panels {
+
+class CompressPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  CompressPanel(MaterialDocument* document, ViewportWidget* viewport, QWidget* parent = nullptr);
+  ~CompressPanel() override;
+
+  QComboBox* formatBox(core::MapSlot slot) const { return m_rows[std::size_t(slot)].format; }
+  QComboBox* qualityBox(core::MapSlot slot) const { return m_rows[std::size_t(slot)].quality; }
+  QComboBox* viewBox() const { return m_view; }
+  QPushButton* compressButton() const { return m_compress; }
+  QPushButton* cancelButton() const { return m_cancel; }
+  QTableWidget* resultsTable() const { return m_results; }
+  CompressionRunner* runner() const { return m_runner; }
+  const std::map<core::MapSlot, core::CompressionOutcome>& outcomes() const { return m_outcomes; }
+  CompareDialog* compareDialog();
+  CompareAllDialog* compareAllDialog();
+
+ public Q_SLOTS:
+  void compress();
+  void cancel();
+  void openCompare();
+  void openCompareAll();
+  void saveSelected();
+
+ Q_SIGNALS:
+  void statusMessage(const QString& message);
+
+ private:
+  struct Row {
+    QLabel* label = nullptr;
+    QComboBox* format = nullptr;
+    QComboBox* quality = nullptr;
+  };
+  void syncFromDocument();
+  void writeChoice(core::MapSlot slot);
+  void dropStalePreviews();
+  void showOutcomes();
+  void updateViewport();
+  std::optional<core::MapSlot> selectedSlot() const;
+
+  MaterialDocument* m_document;
+  ViewportWidget* m_viewport;
+  CompressionRunner* m_runner;
+  std::array<Row, core::kMapSlotCount> m_rows;
+  QCheckBox* m_mipmaps;
+  QPushButton* m_compress;
+  QPushButton* m_cancel;
+  QProgressBar* m_progress;
+  QLabel* m_status;
+  QComboBox* m_view;
+  QTableWidget* m_results;
+  QPushButton* m_compareButton;
+  QPushButton* m_compareAllButton;
+  QPushButton* m_saveButton;
+  CompareDialog* m_compareDialog = nullptr;
+  CompareAllDialog* m_compareAllDialog = nullptr;
+  std::map<core::MapSlot, core::CompressionOutcome> m_outcomes;
+  bool m_syncing = false;
+};
+
+}  // namespace relief::ui::inline panels

@@ -1,0 +1,107 @@
+// LightPanel; see LightPanel.h.
+#include "ui/panels/LightPanel.h"
+
+#include "core/image/ColorSpace.h"
+#include "ui/viewport/ViewportWidget.h"
+
+#include <QColorDialog>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <algorithm>
+#include <cmath>
+
+namespace relief::ui::inline panels {
+namespace {
+
+// The light colour is linear; colour pickers show and return sRGB.
+QColor toQColor(const glm::vec3& linear) {
+  const auto encode = [](float v) { return core::linearToSrgb(std::clamp(v, 0.0f, 1.0f)); };
+  return QColor::fromRgbF(encode(linear.r), encode(linear.g), encode(linear.b));
+}
+
+glm::vec3 toLinear(const QColor& color) {
+  return glm::vec3(core::srgbToLinear(float(color.redF())),
+                   core::srgbToLinear(float(color.greenF())),
+                   core::srgbToLinear(float(color.blueF())));
+}
+
+}  // namespace
+
+LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
+    : QWidget(parent),
+      m_viewport(viewport),
+      m_azimuth(new QSlider(Qt::Horizontal)),
+      m_elevation(new QSlider(Qt::Horizontal)),
+      m_intensity(new QDoubleSpinBox),
+      m_ambient(new QDoubleSpinBox),
+      m_color(new QPushButton) {
+  auto* form = new QFormLayout(this);
+  m_azimuth->setRange(0, 359);
+  m_azimuth->setToolTip(
+      tr("Direction the light comes from, around the vertical axis "
+         "(degrees; 0 = the +Z side). Ctrl+drag in the viewport too."));
+  m_elevation->setRange(-89, 89);
+  m_elevation->setToolTip(tr("Height of the light above the horizon (degrees; 90 = overhead)."));
+  m_intensity->setRange(0.0, 8.0);
+  m_intensity->setSingleStep(0.1);
+  m_intensity->setToolTip(tr("Multiplier on the light colour (linear)."));
+  m_ambient->setRange(0.0, 1.0);
+  m_ambient->setSingleStep(0.02);
+  m_ambient->setToolTip(
+      tr("Light without direction, as a fraction of the colour map; scaled by "
+         "the AO map."));
+  m_color->setToolTip(tr("Colour of the light."));
+  form->addRow(tr("Azimuth"), m_azimuth);
+  form->addRow(tr("Elevation"), m_elevation);
+  form->addRow(tr("Colour"), m_color);
+  form->addRow(tr("Intensity"), m_intensity);
+  form->addRow(tr("Ambient"), m_ambient);
+
+  connect(m_azimuth, &QSlider::valueChanged, this, &LightPanel::applyToViewport);
+  connect(m_elevation, &QSlider::valueChanged, this, &LightPanel::applyToViewport);
+  connect(m_intensity, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
+  connect(m_ambient, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
+  connect(m_color, &QPushButton::clicked, this, &LightPanel::chooseColor);
+  connect(viewport, &ViewportWidget::lightChanged, this, &LightPanel::showLight);
+  showLight();
+}
+
+void LightPanel::showLight() {
+  const core::DirectionalLight& light = m_viewport->view().light;
+  const QSignalBlocker blockAzimuth(m_azimuth), blockElevation(m_elevation),
+      blockIntensity(m_intensity), blockAmbient(m_ambient);
+  m_azimuth->setValue(int(std::lround(light.azimuthDeg)) % 360);
+  m_elevation->setValue(int(std::lround(light.elevationDeg)));
+  m_intensity->setValue(light.intensity);
+  m_ambient->setValue(light.ambient);
+  const QColor color = toQColor(light.color);
+  m_color->setText(color.name());
+  m_color->setStyleSheet(QStringLiteral("background-color: %1; color: %2")
+                             .arg(color.name(), color.lightnessF() > 0.5 ? "black" : "white"));
+}
+
+void LightPanel::applyToViewport() {
+  core::DirectionalLight light = m_viewport->view().light;
+  light.azimuthDeg = float(m_azimuth->value());
+  light.elevationDeg = float(m_elevation->value());
+  light.intensity = float(m_intensity->value());
+  light.ambient = float(m_ambient->value());
+  m_viewport->setLight(light);
+}
+
+void LightPanel::chooseColor() {
+  const QColor chosen =
+      QColorDialog::getColor(toQColor(m_viewport->view().light.color), this, tr("Light colour"));
+  if (!chosen.isValid())
+    return;
+  core::DirectionalLight light = m_viewport->view().light;
+  light.color = toLinear(chosen);
+  m_viewport->setLight(light);
+  showLight();
+}
+
+}  // namespace relief::ui::inline panels

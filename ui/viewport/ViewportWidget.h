@@ -1,0 +1,161 @@
+// ViewportWidget: the 3D view of the material. Hands its GL context to the renderer (widgets
+// never call GL themselves), turns mouse and keys into camera, light and divider changes,
+// paints overlays (heat-map legends, the A/B divider, the error view) and redraws only when
+// the document, the view or the size changed.
+#pragma once
+
+#include "core/compression/Compressor.h"
+#include "core/mesh/Mesh.h"
+#include "core/tracing/UvErrorMap.h"
+#include "core/view/DebugView.h"
+#include "core/view/ViewState.h"
+#include "renderer/FrameSettings.h"
+
+#include <QFutureWatcher>
+#include <QImage>
+#include <QOpenGLWidget>
+#include <QPoint>
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace relief::renderer {
+class MaterialRenderer;
+}
+
+namespace relief::ui::inline document {
+class MaterialDocument;
+}
+
+namespace relief::ui::inline viewport {
+
+class ViewportWidget : public QOpenGLWidget {
+  Q_OBJECT
+
+ public:
+  ViewportWidget(MaterialDocument* document, QWidget* parent = nullptr);
+  ~ViewportWidget() override;
+
+  const renderer::RenderView& view() const { return m_frame.view; }
+  void setView(const renderer::RenderView& view);
+  void setLight(const core::DirectionalLight& light);  // emits lightChanged
+  // Places the camera as given, instead of framing the mesh (a preset's saved view).
+  void setCamera(const core::OrbitCamera& camera);
+  const core::Mesh& mesh() const { return m_mesh; }
+  void setMesh(core::Mesh mesh);  // also frames the camera on it (at the next frame)
+  // Where the mesh shown comes from: a primitive's name or a mesh file's absolute path.
+  const QString& meshSource() const { return m_meshSource; }
+  // Shows a primitive by name or imports a mesh file (Assimp). On success returns what to tell
+  // the user about an imported file ("N triangles, tangents from the file"), empty for a
+  // primitive; the error names the file. Emits meshSourceChanged.
+  core::Result<QString> showMesh(const QString& nameOrPath);
+
+  // The mesh, camera and light shown, as a preset stores them.
+  core::ViewState viewState() const;
+  // Shows a preset's view in one call: its mesh when it names one (and it is not already
+  // shown), its camera (the mesh framed when it has none) and its light. A mesh that cannot be
+  // loaded is the error; the camera and light are applied all the same.
+  core::Status showViewState(const core::ViewState& state);
+
+  core::DebugView debugView() const { return m_frame.debugView; }
+  void setDebugView(core::DebugView view);
+
+  // A/B comparison: B (right of the divider) is a held copy of the material.
+  bool isComparing() const { return m_frame.split.has_value(); }
+  void setComparing(bool on);
+  void holdCurrentAsComparison();
+  const core::Material* comparisonMaterial() const;
+  float dividerFraction() const { return m_dividerFraction; }
+  void setDividerFraction(float fraction);
+
+  // Compression previews: per slot, a compressed texture of the map the document held when it
+  // was made (a slot whose map changed since is shown uncompressed). The view shows the
+  // original, the compressed maps, or a wipe with the original left of the divider.
+  struct CompressedPreview {
+    core::MapSlot slot;
+    std::shared_ptr<const core::Image> source;  // the document's map it was made from
+    std::shared_ptr<const core::CompressedTexture> texture;
+    std::shared_ptr<const core::Image> decoded;
+  };
+  enum class CompressedView { Original, Compressed, Wipe };
+  void setCompressedPreviews(std::vector<CompressedPreview> previews);
+  void setCompressedView(CompressedView view);
+  // See MaterialRenderer::setNativeCompressedUploads; applied at the next frame.
+  void setNativeCompressedUploads(bool native);
+  CompressedView compressedView() const { return m_compressedView; }
+  // The document's material with every current preview substituted.
+  core::Material compressedMaterial() const;
+  // How the previews reach the GPU (native or decoded), as of the last frame.
+  const QString& compressedUploadSummary() const { return m_uploadSummary; }
+
+  // The frame as the renderer gets it (for offscreen renders of exactly this view).
+  renderer::FrameSettings frameSettings() const { return shownFrame().second; }
+  // The material drawn (left of the divider when there is one) and the frame, exactly as the
+  // viewport draws them, compressed previews included.
+  std::pair<core::Material, renderer::FrameSettings> shownFrame() const;
+  // The error view's last numbers, when it has finished.
+  const std::optional<core::UvErrorMap>& errorMap() const { return m_errorMap; }
+
+  static constexpr float kOrbitDegreesPerPixel = 0.4f;
+  static constexpr int kDividerGrabPixels = 6;
+
+ public Q_SLOTS:
+  void frameMesh();
+
+ Q_SIGNALS:
+  void frameRendered(double milliseconds);
+  void rendererReady(const QString& description);
+  void renderError(const QString& message);
+  void lightChanged();
+  void errorViewProgress(int done, int total);  // total 0: finished or cancelled
+  void errorViewFinished(double meanTexels, double p95Texels, double maxTexels);
+  void compressedUploadChanged(const QString& summary);
+  void meshSourceChanged(const QString& source);
+
+ protected:
+  void initializeGL() override;
+  void paintGL() override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+
+ private:
+  enum class DragMode { None, Orbit, Light, Pan, Zoom, Divider };
+  void releaseGl();
+  void releaseGlBeforeContextLoss();
+  void changed();  // view, material or frame changed: redraw and drop a stale error view
+  void startErrorView(int width, int height);
+  void paintOverlays();
+  int dividerX() const;
+
+  bool showsCompressed() const;
+  bool hasDivider() const;
+
+  MaterialDocument* m_document;
+  std::unique_ptr<renderer::MaterialRenderer> m_renderer;
+  std::vector<CompressedPreview> m_previews;
+  CompressedView m_compressedView = CompressedView::Original;
+  QString m_uploadSummary;
+  bool m_nativeCompressed = true;
+  renderer::FrameSettings m_frame;
+  float m_dividerFraction = 0.5f;
+  core::Mesh m_mesh;
+  QString m_meshSource = QStringLiteral("plane");
+  bool m_meshDirty = true;
+  bool m_framePending = true;
+  DragMode m_drag = DragMode::None;
+  QPoint m_lastPos;
+
+  // The error view: a CPU trace per frame, in the background.
+  QFutureWatcher<core::UvErrorMap> m_errorWatcher;
+  std::shared_ptr<std::atomic<bool>> m_errorCancel;
+  bool m_errorStale = true;
+  std::optional<core::UvErrorMap> m_errorMap;
+  QImage m_errorImage;
+};
+
+}  // namespace relief::ui::inline viewport

@@ -1,0 +1,133 @@
+// AppSettings; see AppSettings.h.
+#include "ui/window/AppSettings.h"
+
+#include "core/mesh/MeshPrimitives.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QSettings>
+#include <QStandardPaths>
+
+#include <algorithm>
+
+namespace relief::ui::settings {
+namespace {
+
+const QString kRecent = QStringLiteral("recentFiles");
+const QString kFolders = QStringLiteral("folders/");
+const QString kAnyFolder = QStringLiteral("folders/any");
+
+}  // namespace
+
+QStringList recentFiles() {
+  QStringList files = QSettings().value(kRecent).toStringList();
+  files.erase(std::remove_if(files.begin(), files.end(),
+                             [](const QString& path) { return !QFileInfo::exists(path); }),
+              files.end());
+  return files;
+}
+
+void addRecentFile(const QString& path) {
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  QStringList files = QSettings().value(kRecent).toStringList();
+  files.removeAll(absolute);
+  files.prepend(absolute);
+  while (files.size() > kMaxRecentFiles)
+    files.removeLast();
+  QSettings().setValue(kRecent, files);
+}
+
+void removeRecentFile(const QString& path) {
+  QStringList files = QSettings().value(kRecent).toStringList();
+  files.removeAll(QFileInfo(path).absoluteFilePath());
+  QSettings().setValue(kRecent, files);
+}
+
+QString lastFolder(const QString& purpose, bool orAny) {
+  const QSettings settings;
+  QStringList keys{kFolders + purpose};
+  if (orAny)
+    keys << kAnyFolder;
+  for (const QString& key : keys) {
+    const QString folder = settings.value(key).toString();
+    if (!folder.isEmpty() && QFileInfo(folder).isDir())
+      return folder;
+  }
+  const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+  return QFileInfo(documents).isDir() ? documents : QDir::homePath();
+}
+
+void setLastFolder(const QString& purpose, const QString& folder) {
+  QSettings settings;
+  settings.setValue(kFolders + purpose, folder);
+  settings.setValue(kAnyFolder, folder);
+}
+
+int autosaveMinutes() {
+  return std::clamp(QSettings().value(QStringLiteral("preferences/autosaveMinutes"), 2).toInt(), 0,
+                    60);
+}
+
+void setAutosaveMinutes(int minutes) {
+  QSettings().setValue(QStringLiteral("preferences/autosaveMinutes"), minutes);
+}
+
+bool nativeCompressedUploads() {
+  return QSettings().value(QStringLiteral("preferences/nativeCompressedUploads"), true).toBool();
+}
+
+void setNativeCompressedUploads(bool native) {
+  QSettings().setValue(QStringLiteral("preferences/nativeCompressedUploads"), native);
+}
+
+bool openSampleOnStart() {
+  return QSettings().value(QStringLiteral("preferences/openSampleOnStart"), true).toBool();
+}
+
+void setOpenSampleOnStart(bool open) {
+  QSettings().setValue(QStringLiteral("preferences/openSampleOnStart"), open);
+}
+
+QString defaultMesh() {
+  const QString mesh =
+      QSettings()
+          .value(QStringLiteral("preferences/defaultMesh"), QStringLiteral("plane"))
+          .toString();
+  return core::findPrimitiveShape(mesh.toStdString()) ? mesh : QStringLiteral("plane");
+}
+
+void setDefaultMesh(const QString& mesh) {
+  QSettings().setValue(QStringLiteral("preferences/defaultMesh"), mesh);
+}
+
+core::DirectionalLight viewportLight() {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("viewport/light"));
+  core::DirectionalLight light;
+  light.azimuthDeg = settings.value(QStringLiteral("azimuth"), light.azimuthDeg).toFloat();
+  light.elevationDeg = std::clamp(
+      settings.value(QStringLiteral("elevation"), light.elevationDeg).toFloat(), -90.0f, 90.0f);
+  light.intensity = std::clamp(
+      settings.value(QStringLiteral("intensity"), light.intensity).toFloat(), 0.0f, 100.0f);
+  light.ambient =
+      std::clamp(settings.value(QStringLiteral("ambient"), light.ambient).toFloat(), 0.0f, 1.0f);
+  const QList<QVariant> color = settings.value(QStringLiteral("color")).toList();
+  if (color.size() == 3) {
+    for (int i = 0; i < 3; ++i)
+      light.color[i] = std::clamp(color[i].toFloat(), 0.0f, 16.0f);
+  }
+  return light;
+}
+
+void setViewportLight(const core::DirectionalLight& light) {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("viewport/light"));
+  settings.setValue(QStringLiteral("azimuth"), light.azimuthDeg);
+  settings.setValue(QStringLiteral("elevation"), light.elevationDeg);
+  settings.setValue(QStringLiteral("intensity"), light.intensity);
+  settings.setValue(QStringLiteral("ambient"), light.ambient);
+  settings.setValue(QStringLiteral("color"),
+                    QList<QVariant>{light.color.r, light.color.g, light.color.b});
+}
+
+}  // namespace relief::ui::settings

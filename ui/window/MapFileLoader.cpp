@@ -1,0 +1,89 @@
+// MapFileLoader; see MapFileLoader.h.
+#include "ui/window/MapFileLoader.h"
+
+#include "core/image/ImageIO.h"
+#include "ui/document/MaterialDocument.h"
+#include "ui/window/AppSettings.h"
+#include "ui/window/QtText.h"
+
+#include <QApplication>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMessageBox>
+#include <QStringList>
+
+namespace relief::ui::inline window {
+namespace {
+
+const QStringList& imageSuffixes() {
+  static const QStringList suffixes = {
+      QStringLiteral("png"), QStringLiteral("jpg"),  QStringLiteral("jpeg"), QStringLiteral("tga"),
+      QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("exr")};
+  return suffixes;
+}
+
+}  // namespace
+
+MapFileLoader::MapFileLoader(MaterialDocument* document, QWidget* dialogParent)
+    : QObject(dialogParent), m_document(document), m_parent(dialogParent) {}
+
+bool MapFileLoader::isImageFile(const QString& path) {
+  return imageSuffixes().contains(QFileInfo(path).suffix().toLower());
+}
+
+QString MapFileLoader::fileFilter() {
+  QStringList patterns;
+  for (const QString& suffix : imageSuffixes())
+    patterns << QStringLiteral("*.") + suffix;
+  return tr("Images (%1);;All files (*)").arg(patterns.join(QLatin1Char(' ')));
+}
+
+std::optional<core::MapSlot> MapFileLoader::askForSlot(const QString& path) {
+  QStringList labels;
+  for (core::MapSlot candidate : core::kAllMapSlots)
+    labels << toQString(core::mapSlotLabel(candidate));
+  bool ok = false;
+  const QString chosen = QInputDialog::getItem(
+      m_parent, tr("Which map is this?"),
+      tr("%1 does not say which map it is.\nUse it as:").arg(QFileInfo(path).fileName()), labels, 0,
+      false, &ok);
+  if (!ok)
+    return std::nullopt;
+  return core::kAllMapSlots[std::size_t(labels.indexOf(chosen))];
+}
+
+bool MapFileLoader::load(const QString& path, std::optional<core::MapSlot> slot) {
+  if (!slot)
+    slot = core::guessMapSlotFromFileName(QFileInfo(path).fileName().toStdString());
+  if (!slot)
+    slot = askForSlot(path);
+  if (!slot)
+    return false;
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  core::Result<core::Image> image = core::loadImage(path.toStdString());
+  QApplication::restoreOverrideCursor();
+  if (!image) {
+    QMessageBox::warning(m_parent, tr("Cannot load map"), QString::fromStdString(image.error()));
+    return false;
+  }
+  m_document->setMap(*slot, std::make_shared<core::Image>(std::move(image).value()),
+                     QFileInfo(path).absoluteFilePath());
+  settings::setLastFolder(QStringLiteral("map"), QFileInfo(path).absolutePath());
+  Q_EMIT statusMessage(
+      tr("Loaded %1 as the %2 map")
+          .arg(QFileInfo(path).fileName(), toQString(core::mapSlotLabel(*slot)).toLower()),
+      5000);
+  return true;
+}
+
+void MapFileLoader::choose(std::optional<core::MapSlot> slot) {
+  const QString title =
+      slot ? tr("Load %1 map").arg(toQString(core::mapSlotLabel(*slot)).toLower()) : tr("Open map");
+  const QString path = QFileDialog::getOpenFileName(
+      m_parent, title, settings::lastFolder(QStringLiteral("map")), fileFilter());
+  if (!path.isEmpty())
+    load(path, slot);
+}
+
+}  // namespace relief::ui::inline window

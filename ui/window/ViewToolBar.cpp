@@ -1,0 +1,89 @@
+// ViewToolBar; see ViewToolBar.h.
+#include "ui/window/ViewToolBar.h"
+
+#include "core/mesh/MeshPrimitives.h"
+#include "core/view/DebugView.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/window/QtText.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QFileInfo>
+#include <QLabel>
+
+namespace relief::ui::inline window {
+
+ViewToolBar::ViewToolBar(ViewportWidget* viewport, QWidget* parent)
+    : QToolBar(tr("View"), parent),
+      m_viewport(viewport),
+      m_debugView(new QComboBox),
+      m_meshBox(new QComboBox) {
+  setObjectName(QStringLiteral("viewToolBar"));
+  setMovable(false);
+
+  m_debugView->setObjectName(QStringLiteral("debugView"));
+  for (core::DebugView view : core::allDebugViews()) {
+    m_debugView->addItem(toQString(core::debugViewLabel(view)),
+                         toQString(core::debugViewName(view)));
+  }
+  m_debugView->setToolTip(
+      tr("What the viewport shows: the shaded material or a diagnostic view "
+         "(the CLI's --view). \"Samples per pixel\" is the cost; \"UV "
+         "error\" compares every pixel with the exact intersection."));
+  connect(m_debugView, &QComboBox::activated, this, [this](int index) {
+    m_viewport->setDebugView(core::allDebugViews()[std::size_t(index)]);
+  });
+  addWidget(new QLabel(tr(" View ")));
+  addWidget(m_debugView);
+
+  m_meshBox->setObjectName(QStringLiteral("mesh"));
+  for (core::PrimitiveShape shape : core::allPrimitiveShapes()) {
+    const QString name = toQString(core::primitiveShapeName(shape));
+    m_meshBox->addItem(name.left(1).toUpper() + name.mid(1));
+  }
+  m_meshBox->setToolTip(tr("The mesh the material is shown on (File > Open Mesh… for your own)."));
+  connect(m_meshBox, &QComboBox::activated, this, [this](int index) {
+    if (index < int(core::allPrimitiveShapes().size())) {
+      Q_EMIT meshRequested(
+          toQString(core::primitiveShapeName(core::allPrimitiveShapes()[std::size_t(index)])));
+    }
+  });
+  addWidget(new QLabel(tr("  Mesh ")));
+  addWidget(m_meshBox);
+  addSeparator();
+
+  m_compare = addAction(tr("Compare A|B"));
+  m_compare->setObjectName(QStringLiteral("compare"));
+  m_compare->setCheckable(true);
+  m_compare->setShortcut(QKeySequence(tr("C")));
+  m_compare->setToolTip(
+      tr("Split the viewport: the live material left (A), a held copy right "
+         "(B), on the same camera. Drag the divider. (C)"));
+  connect(m_compare, &QAction::toggled, m_viewport, &ViewportWidget::setComparing);
+  QAction* hold = m_holdAsB = addAction(tr("Hold as B"));
+  hold->setShortcut(QKeySequence(tr("Shift+C")));
+  hold->setToolTip(
+      tr("Copy the current material to the B side, then change A to compare "
+         "(e.g. POM against parallax-limited, or 64 samples against 16). "
+         "(Shift+C)"));
+  connect(hold, &QAction::triggered, this, [this] {
+    m_viewport->holdCurrentAsComparison();
+    m_compare->setChecked(true);
+  });
+  connect(m_viewport, &ViewportWidget::meshSourceChanged, this, &ViewToolBar::showMeshSource);
+}
+
+// The toolbar's mesh box follows the viewport: a primitive's entry, or the file's name last.
+void ViewToolBar::showMeshSource(const QString& source) {
+  const int customIndex = int(core::allPrimitiveShapes().size());
+  if (const auto shape = core::findPrimitiveShape(source.toStdString())) {
+    m_meshBox->setCurrentIndex(int(*shape));
+    return;
+  }
+  if (m_meshBox->count() > customIndex)
+    m_meshBox->removeItem(customIndex);
+  m_meshBox->addItem(QFileInfo(source).fileName());
+  m_meshBox->setCurrentIndex(customIndex);
+}
+
+}  // namespace relief::ui::inline window

@@ -1,0 +1,43 @@
+// ViewToolBar: the main window's "View" toolbar — what the viewport shows (the shaded material
+// or a diagnostic view), the mesh it is shown on, and the A|B comparison. It drives the viewport
+// directly and follows it: the mesh box shows the viewport's mesh whoever changed it.
+#pragma once
+
+#include <QString>
+#include <QToolBar>
+
+class QAction;
+class QComboBox;
+
+namespace relief::ui::inline viewport {
+class ViewportWidget;
+}
+
+namespace relief::ui::inline window {
+
+class ViewToolBar : public QToolBar {
+  Q_OBJECT
+
+ public:
+  explicit ViewToolBar(ViewportWidget* viewport, QWidget* parent = nullptr);
+
+  QComboBox* debugViewBox() const { return m_debugView; }
+  QComboBox* meshBox() const { return m_meshBox; }
+  QAction* compareAction() const { return m_compare; }
+  QAction* holdAction() const { return m_holdAsB; }
+
+ Q_SIGNALS:
+  // A primitive was picked in the mesh box (by name); the window loads it and reports problems.
+  void meshRequested(const QString& name);
+
+ private:
+  void showMeshSource(const QString& source);
+
+  ViewportWidget* m_viewport;
+  QComboBox* m_debugView;
+  QComboBox* m_meshBox;
+  QAction* m_compare;
+  QAction* m_holdAsB;
+};
+
+}  // namespace relief::ui::inline window
