@@ -1,5 +1,6 @@
-// BackgroundTask: the one way the editor runs work off the GUI thread (compression, generation,
-// the error view, export, the preset library's thumbnails and saves, autosave). run() starts the
+// BackgroundTask: how the editor runs work off the GUI thread (so far compression, generation
+// and saving to the preset library; the error view, export, thumbnails and autosave still have
+// their own code, to move here next). run() starts the
 // work on Qt's thread pool with a WorkControl (a cancel flag the work polls, a progress callback);
 // a newer run() cancels the older, whose result is then dropped; progress and the result come
 // back on the GUI thread, to the caller's callbacks, for the newest run only. The callback is
