@@ -1,7 +1,7 @@
 // PackageExport; see PackageExport.h.
 #include "core/exporters/PackageExport.h"
 
-#include "core/compression/Compressor.h"
+#include "core/compression/CompressionJob.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
 
@@ -23,31 +23,32 @@ namespace {
 
 // The compressed copy of one map, when the preset has a compression choice for it.
 Status writeCompressed(const Preset& preset, MapSlot slot, const std::string& folder,
-                       const std::string& stem, const PackageOptions& options) {
+                       const std::string& stem, const PackageOptions& options,
+                       const WorkControl& control) {
   const MapCompression& choice = preset.compression[std::size_t(slot)];
   if (options.textures == PackageTextures::None || !choice)
     return {};
-  const TextureFormat* format = &choice->format;
-  if (!formatSuitsSlot(*format, slot)) {
-    return makeError(std::string(mapSlotLabel(slot)) +
-                     " map: " + std::string(textureFormatInfo(*format).label) + " cannot hold it");
-  }
-  Result<CompressedTexture> texture = compressMap(*preset.material.map(slot).image, slot, *choice);
-  if (!texture)
-    return makeError(std::string(mapSlotLabel(slot)) + " map: " + texture.error());
-  const bool dds = options.textures == PackageTextures::DdsWherePossible &&
-                   textureFormatInfo(*format).fourCC != 0;
+  CompressionJob job;
+  job.map = preset.material.map(slot).image;
+  job.slot = slot;
+  job.settings = *choice;
+  job.measure = false;
+  Result<CompressionOutcome> outcome = runCompressionJob(job, control);
+  if (!outcome)
+    return makeError(std::string(mapSlotLabel(slot)) + " map: " + outcome.error());
+  const TextureContainer container =
+      containerFor(choice->format, options.textures == PackageTextures::DdsWherePossible);
   const std::string path =
       (std::filesystem::path(folder) /
-       (stem + "_" + std::string(mapSlotName(slot)) + (dds ? ".dds" : ".ktx2")))
+       (stem + "_" + std::string(mapSlotName(slot)) + std::string(containerExtension(container))))
           .string();
-  return saveCompressedTexture(texture.value(), path);
+  return saveCompressedTexture(*outcome->texture, path);
 }
 
 }  // namespace
 
 Result<std::string> exportPackage(const Preset& preset, const std::string& folder,
-                                  const PackageOptions& options) {
+                                  const PackageOptions& options, const WorkControl& control) {
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
   if (ec)
@@ -58,6 +59,8 @@ Result<std::string> exportPackage(const Preset& preset, const std::string& folde
     const MaterialMap& map = preset.material.map(slot);
     if (!map.image)
       continue;
+    if (control.cancelled())
+      return makeError("cancelled");
     std::string extension = ".png";
     SampleFormat format = SampleFormat::UInt8;
     if (slot != MapSlot::Color) {
@@ -80,8 +83,9 @@ Result<std::string> exportPackage(const Preset& preset, const std::string& folde
       return makeError(saved.error());
     }
     packaged.material.setMap(slot, map.image, std::filesystem::absolute(path).string());
-    if (Status compressed = writeCompressed(preset, slot, folder, stem, options); !compressed)
-      return makeError(compressed.error());
+    if (Status compressed = writeCompressed(preset, slot, folder, stem, options, control);
+        !compressed)
+      return makeError(control.cancelled() ? "cancelled" : compressed.error());
   }
   // A mesh file travels with the package; primitives are names.
   if (std::filesystem::path(packaged.view.mesh).has_extension()) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/base/Result.h"
+#include "core/base/WorkControl.h"
 #include "core/material/MaterialPreset.h"
 
 #include <string>
@@ -26,9 +27,11 @@ struct PackageOptions {
 
 // Writes <folder>/<name>_<slot>.<ext> and <folder>/<name>.relief (creating the folder), plus
 // <name>_<slot>.ktx2 or .dds for each map with a compression choice (the preset keeps pointing
-// at the lossless files). Returns the preset's path.
+// at the lossless files). Returns the preset's path; fails with "cancelled" when cancelled
+// (checked between maps and inside compression).
 Result<std::string> exportPackage(const Preset& preset, const std::string& folder,
-                                  const PackageOptions& options = {});
+                                  const PackageOptions& options = {},
+                                  const WorkControl& control = {});
 
 // The file name stem exports use: the material's name, or "material", made safe for files.
 std::string exportStem(const Material& material);

@@ -26,6 +26,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
 #include <QTreeWidget>
@@ -308,10 +309,37 @@ TEST_F(DocumentWorkflow, ExportDialogWritesAGodotMaterial) {
   dialog.kindBox()->setCurrentIndex(2);
   dialog.folderEdit()->setText(QString::fromStdString(folder));
   DialogAnswerer ok(QStringLiteral("OK"));
-  ASSERT_TRUE(dialog.runExport());
+  QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+  ASSERT_TRUE(dialog.startExport());
+  // The export runs in the background: the dialog can be cancelled while it does.
+  EXPECT_TRUE(dialog.isExporting());
+  ASSERT_TRUE(finished.wait(60000));
+  EXPECT_TRUE(finished.front().front().toBool());
   EXPECT_EQ(ok.answered(), 1);
   EXPECT_TRUE(std::filesystem::exists(folder + "/bricks.tres"));
   EXPECT_EQ(dialog.writtenPath().toStdString(), folder + "/bricks.tres");
+}
+
+// Cancel stops a running export without closing the dialog: no preset is written (it is the
+// last file a package writes) and Export can be pressed again.
+TEST_F(DocumentWorkflow, ExportCanBeCancelledWhileItRuns) {
+  const std::string folder = scratchFolder() + "/ui-export-cancelled";
+  core::Preset preset = document()->toPreset(core::ViewState{});
+  // ASTC 4x4 at best quality takes seconds for the 1024x1024 colour map: time to cancel.
+  preset.compression[std::size_t(core::MapSlot::Color)] =
+      core::CompressionSettings{core::TextureFormat::Astc4x4, core::CompressionQuality::Best, true};
+  ui::ExportDialog dialog(preset, m_window->viewport()->mesh(), m_window.get());
+  dialog.kindBox()->setCurrentIndex(int(core::ExportKind::Package));
+  dialog.folderEdit()->setText(QString::fromStdString(folder));
+  QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+  ASSERT_TRUE(dialog.startExport());
+  QTest::mouseClick(dialog.cancelButton(), Qt::LeftButton);
+  ASSERT_TRUE(finished.wait(60000));
+  EXPECT_FALSE(finished.front().front().toBool());
+  EXPECT_FALSE(dialog.isExporting());
+  EXPECT_FALSE(std::filesystem::exists(folder + "/bricks.relief"));
+  EXPECT_TRUE(dialog.writtenPath().isEmpty());
+  EXPECT_NE(dialog.result(), QDialog::Accepted);
 }
 
 TEST_F(DocumentWorkflow, ViewportImageAtAnySize) {

@@ -22,7 +22,6 @@
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 namespace relief::ui::inline document {
 namespace {
@@ -42,6 +41,7 @@ PresetLibrary::PresetLibrary(MaterialDocument* document, QWidget* parent)
     : QWidget(parent),
       m_document(document),
       m_saving(new BackgroundTask(this)),
+      m_loading(new BackgroundTask(this)),
       m_list(new QListWidget),
       m_open(new QPushButton(tr("Open"))),
       m_apply(new QPushButton(tr("Apply"))),
@@ -88,15 +88,14 @@ PresetLibrary::PresetLibrary(MaterialDocument* document, QWidget* parent)
   connect(m_apply, &QPushButton::clicked, this, [this] { applyParameters(selectedPath()); });
   connect(m_delete, &QPushButton::clicked, this, [this] { deletePreset(selectedPath()); });
   connect(saveCurrent, &QPushButton::clicked, this, &PresetLibrary::saveCurrentRequested);
-  connect(&m_loader, &QFutureWatcher<std::shared_ptr<core::LoadedPreset>>::finished, this,
-          &PresetLibrary::renderNextThumbnail);
   updateButtons();
   refresh();
 }
 
 PresetLibrary::~PresetLibrary() {
   m_pendingThumbnails.clear();
-  m_loader.waitForFinished();
+  m_loading->cancel();
+  m_loading->waitForFinished();
 }
 
 QString PresetLibrary::userFolder() {
@@ -115,8 +114,7 @@ void PresetLibrary::refresh() {
   if (!m_bundledFolder.isEmpty())
     addPresets(m_bundledFolder, false);
   addPresets(userFolder(), true);
-  if (!m_loader.isRunning())
-    renderNextThumbnail();
+  loadNextThumbnail();
   updateButtons();
 }
 
@@ -158,55 +156,52 @@ QIcon PresetLibrary::cachedThumbnail(const QString& path) const {
 
 // One preset at a time: its maps load in the background, then the renderer draws it here (GL
 // contexts belong to this thread), then the next one starts.
-void PresetLibrary::renderNextThumbnail() {
-  if (m_loader.isFinished() && m_loader.future().isValid() && m_loader.future().resultCount()) {
-    std::shared_ptr<core::LoadedPreset> loaded = m_loader.result();
-    m_loader.setFuture(QFuture<std::shared_ptr<core::LoadedPreset>>());
-    if (loaded && !m_rendererFailed) {
-      if (!m_renderer) {
-        auto created = renderer::OffscreenRenderer::create();
-        if (created) {
-          m_renderer = std::move(created).value();
-          m_renderer->setMesh(core::makeSphere());
-        } else {
-          m_rendererFailed = true;
-          Q_EMIT statusMessage(
-              tr("Preset thumbnails: %1").arg(QString::fromStdString(created.error())), 10000);
-        }
-      }
-      if (m_renderer) {
-        renderer::RenderView view;
-        view.camera = core::defaultCameraFor(core::makeSphere(), 1.0f);
-        view.camera.yawDeg = 20.0f;
-        view.camera.pitchDeg = 25.0f;
-        m_renderer->setMaterial(loaded->preset.material);
-        // Supersampled, then box-filtered down: smooth edges at thumbnail size.
-        core::Result<core::Image> image =
-            m_renderer->render(view, kThumbnailSize * 2, kThumbnailSize * 2);
-        if (image) {
-          const QImage thumbnail = renderer::makeThumbnail(image.value(), kThumbnailSize);
-          const QString source = m_loader.property("path").toString();
-          const QString cache = thumbnailCachePath(source);
-          QDir().mkpath(QFileInfo(cache).absolutePath());
-          thumbnail.save(cache);
-          for (int i = 0; i < m_list->count(); ++i) {
-            if (m_list->item(i)->data(kPathRole).toString() == source)
-              m_list->item(i)->setIcon(QIcon(QPixmap::fromImage(thumbnail)));
-          }
-        }
-      }
-    }
-  }
-  if (m_pendingThumbnails.isEmpty())
+void PresetLibrary::loadNextThumbnail() {
+  if (m_pendingThumbnails.isEmpty() || m_loading->isRunning())
     return;
   const QString next = m_pendingThumbnails.takeFirst();
-  m_loader.setProperty("path", next);
-  m_loader.setFuture(QtConcurrent::run([next]() -> std::shared_ptr<core::LoadedPreset> {
-    core::Result<core::LoadedPreset> loaded = core::loadPreset(next.toStdString());
-    if (!loaded)
-      return nullptr;
-    return std::make_shared<core::LoadedPreset>(std::move(loaded).value());
-  }));
+  using Loaded = core::Result<core::LoadedPreset>;
+  m_loading->run<Loaded>(
+      [next](const core::WorkControl&) { return core::loadPreset(next.toStdString()); },
+      [this, next](Loaded&& loaded) {
+        if (loaded)
+          renderThumbnail(next, loaded->preset.material);
+        loadNextThumbnail();
+      });
+}
+
+void PresetLibrary::renderThumbnail(const QString& source, const core::Material& material) {
+  if (m_rendererFailed)
+    return;
+  if (!m_renderer) {
+    auto created = renderer::OffscreenRenderer::create();
+    if (!created) {
+      m_rendererFailed = true;
+      Q_EMIT statusMessage(tr("Preset thumbnails: %1").arg(QString::fromStdString(created.error())),
+                           10000);
+      return;
+    }
+    m_renderer = std::move(created).value();
+    m_renderer->setMesh(core::makeSphere());
+  }
+  renderer::RenderView view;
+  view.camera = core::defaultCameraFor(core::makeSphere(), 1.0f);
+  view.camera.yawDeg = 20.0f;
+  view.camera.pitchDeg = 25.0f;
+  m_renderer->setMaterial(material);
+  // Supersampled, then box-filtered down: smooth edges at thumbnail size.
+  core::Result<core::Image> image =
+      m_renderer->render(view, kThumbnailSize * 2, kThumbnailSize * 2);
+  if (!image)
+    return;
+  const QImage thumbnail = renderer::makeThumbnail(image.value(), kThumbnailSize);
+  const QString cache = thumbnailCachePath(source);
+  QDir().mkpath(QFileInfo(cache).absolutePath());
+  thumbnail.save(cache);
+  for (int i = 0; i < m_list->count(); ++i) {
+    if (m_list->item(i)->data(kPathRole).toString() == source)
+      m_list->item(i)->setIcon(QIcon(QPixmap::fromImage(thumbnail)));
+  }
 }
 
 QString PresetLibrary::selectedPath() const {

@@ -5,7 +5,6 @@
 // copies of its maps, so the library does not depend on where they were).
 #pragma once
 
-#include <QFutureWatcher>
 #include <QIcon>
 #include <QStringList>
 #include <QWidget>
@@ -21,6 +20,7 @@ class OffscreenRenderer;
 }
 
 namespace relief::core::inline material {
+class Material;
 struct LoadedPreset;
 struct Preset;
 }  // namespace relief::core::inline material
@@ -68,20 +68,21 @@ class PresetLibrary : public QWidget {
 
  private:
   void addPresets(const QString& folder, bool user);
-  void renderNextThumbnail();
+  void loadNextThumbnail();
+  void renderThumbnail(const QString& source, const core::Material& material);
   QIcon cachedThumbnail(const QString& path) const;
   QString thumbnailCachePath(const QString& path) const;
   void updateButtons();
 
   MaterialDocument* m_document;
   BackgroundTask* m_saving;
+  BackgroundTask* m_loading;  // thumbnails: the next preset's maps
   QListWidget* m_list;
   QPushButton* m_open;
   QPushButton* m_apply;
   QPushButton* m_delete;
   QString m_bundledFolder;
   QStringList m_pendingThumbnails;
-  QFutureWatcher<std::shared_ptr<core::LoadedPreset>> m_loader;
   std::unique_ptr<renderer::OffscreenRenderer> m_renderer;
   bool m_rendererFailed = false;
 };

@@ -1,6 +1,8 @@
 // RecoveryStore; see RecoveryStore.h.
 #include "ui/document/RecoveryStore.h"
 
+#include "ui/tasks/BackgroundTask.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -8,7 +10,6 @@
 #include <QJsonObject>
 #include <QStandardPaths>
 #include <QUuid>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 
@@ -30,28 +31,17 @@ QString RecoveryStore::recoveryRoot() {
          QStringLiteral("/recovery");
 }
 
-RecoveryStore::RecoveryStore(QObject* parent) : QObject(parent) {
+RecoveryStore::RecoveryStore(QObject* parent)
+    : QObject(parent), m_writer(new BackgroundTask(this)) {
   m_folder = recoveryRoot() + QLatin1Char('/') + QUuid::createUuid().toString(QUuid::WithoutBraces);
   QDir().mkpath(m_folder);
   m_lock = std::make_unique<QLockFile>(m_folder + QLatin1Char('/') + kLockName);
   m_lock->tryLock(0);
-  connect(&m_writer, &QFutureWatcher<QString>::finished, this, [this] {
-    const QString error = m_writer.result();
-    if (!error.isEmpty() && !m_reportedFailure) {
-      m_reportedFailure = true;
-      Q_EMIT autosaveFailed(error);
-    }
-    if (m_pending) {
-      core::Preset next = std::move(*m_pending);
-      m_pending.reset();
-      startWrite(std::move(next));
-    }
-  });
 }
 
 RecoveryStore::~RecoveryStore() {
   m_pending.reset();
-  m_writer.waitForFinished();
+  m_writer->waitForFinished();
   m_lock->unlock();
   QDir(m_folder).removeRecursively();
 }
@@ -62,7 +52,7 @@ void RecoveryStore::autosave(const core::Preset& preset, const QString& original
       recoveryKey(),
       QJsonObject{{QStringLiteral("originalPath"), originalPath},
                   {QStringLiteral("savedAt"), QDateTime::currentDateTime().toString(Qt::ISODate)}});
-  if (m_writer.isRunning()) {
+  if (m_writer->isRunning()) {
     m_pending = std::move(copy);
     return;
   }
@@ -72,15 +62,26 @@ void RecoveryStore::autosave(const core::Preset& preset, const QString& original
 void RecoveryStore::startWrite(core::Preset preset) {
   // Maps from files are referenced where they are; only generated maps are written here.
   const std::string path = (m_folder + QLatin1Char('/') + kPresetName).toStdString();
-  m_writer.setFuture(QtConcurrent::run([preset = std::move(preset), path]() -> QString {
-    core::Result<core::SavedPreset> saved = core::savePreset(preset, path);
-    return saved ? QString() : QString::fromStdString(saved.error());
-  }));
+  // Writes follow one another (never two at once on the same files); the newest state waits.
+  using Saved = core::Result<core::SavedPreset>;
+  m_writer->run<Saved>([preset = std::move(preset),
+                        path](const core::WorkControl&) { return core::savePreset(preset, path); },
+                       [this](Saved&& saved) {
+                         if (!saved && !m_reportedFailure) {
+                           m_reportedFailure = true;
+                           Q_EMIT autosaveFailed(QString::fromStdString(saved.error()));
+                         }
+                         if (m_pending) {
+                           core::Preset next = std::move(*m_pending);
+                           m_pending.reset();
+                           startWrite(std::move(next));
+                         }
+                       });
 }
 
 void RecoveryStore::clear() {
   m_pending.reset();
-  m_writer.waitForFinished();
+  m_writer->waitForFinished();
   QDir folder(m_folder);
   for (const QString& name : folder.entryList(QDir::Files)) {
     if (name != kLockName)

@@ -7,13 +7,16 @@
 #include "core/material/MaterialPreset.h"
 
 #include <QDateTime>
-#include <QFutureWatcher>
 #include <QLockFile>
 #include <QString>
 
 #include <memory>
 #include <optional>
 #include <vector>
+
+namespace relief::ui::inline tasks {
+class BackgroundTask;
+}
 
 namespace relief::ui::inline document {
 
@@ -55,7 +58,7 @@ class RecoveryStore : public QObject {
   std::unique_ptr<QLockFile> m_lock;
   void startWrite(core::Preset preset);
 
-  QFutureWatcher<QString> m_writer;       // result: an error message, empty on success
+  BackgroundTask* m_writer;               // one autosave write at a time
   std::optional<core::Preset> m_pending;  // the newest state, waiting for the running write
   bool m_reportedFailure = false;
 };

@@ -8,6 +8,7 @@
 #include "renderer/ImageConversion.h"
 #include "renderer/MaterialRenderer.h"
 #include "ui/document/MaterialDocument.h"
+#include "ui/tasks/BackgroundTask.h"
 #include "ui/window/QtText.h"
 
 #include <QElapsedTimer>
@@ -17,20 +18,17 @@
 #include <QOpenGLFunctions>
 #include <QPainter>
 #include <QWheelEvent>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
 
 namespace relief::ui::inline viewport {
-namespace {
-
-// The error view's colour scale: errors of a quarter texel and more are red.
-
-}  // namespace
 
 ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
-    : QOpenGLWidget(parent), m_document(document), m_mesh(core::makePlane()) {
+    : QOpenGLWidget(parent),
+      m_document(document),
+      m_mesh(core::makePlane()),
+      m_errorTask(new BackgroundTask(this)) {
   setMinimumSize(320, 240);
   setFocusPolicy(Qt::StrongFocus);
   setToolTip(
@@ -45,22 +43,15 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
   connect(document, &MaterialDocument::techniqueChanged, this, materialTouched);
   connect(document, &MaterialDocument::mapChanged, this, materialTouched);
   connect(document, &MaterialDocument::materialReset, this, materialTouched);
-  connect(&m_errorWatcher, &QFutureWatcher<core::UvErrorMap>::finished, this, [this] {
-    if (m_errorWatcher.isCanceled() || m_errorCancel->load())
-      return;
-    m_errorMap = m_errorWatcher.result();
-    m_errorImage =
-        renderer::toDisplayImage(core::colorizeErrorMap(*m_errorMap, core::kErrorDisplayTexels));
-    Q_EMIT errorViewProgress(0, 0);
-    Q_EMIT errorViewFinished(m_errorMap->mean, m_errorMap->p95, m_errorMap->maximum);
-    update();
-  });
+  connect(m_errorTask, &BackgroundTask::progress, this,
+          [this](double fraction) { Q_EMIT errorViewProgress(int(fraction * 1000.0), 1000); });
+  connect(m_errorTask, &BackgroundTask::cancelled, this,
+          [this] { Q_EMIT errorViewProgress(0, 0); });
 }
 
 ViewportWidget::~ViewportWidget() {
-  if (m_errorCancel)
-    m_errorCancel->store(true);
-  m_errorWatcher.waitForFinished();
+  m_errorTask->cancel();
+  m_errorTask->waitForFinished();
   if (context()) {
     // Our slot on aboutToBeDestroyed must not run on a half-destroyed widget.
     disconnect(context(), nullptr, this, nullptr);
@@ -313,9 +304,7 @@ void ViewportWidget::paintGL() {
 
 void ViewportWidget::startErrorView(int pixelWidth, int pixelHeight) {
   m_errorStale = false;
-  if (m_errorCancel)
-    m_errorCancel->store(true);
-  m_errorWatcher.waitForFinished();
+  m_errorTask->cancel();
   m_errorMap.reset();
   m_errorImage = {};
   renderer::FrameSettings frame = m_frame;
@@ -324,27 +313,26 @@ void ViewportWidget::startErrorView(int pixelWidth, int pixelHeight) {
     Q_EMIT renderError(QString::fromStdString(inputs.error()));
     return;
   }
-  m_errorCancel = std::make_shared<std::atomic<bool>>(false);
-  auto cancel = m_errorCancel;
-  QPointer<ViewportWidget> self(this);
-  m_errorWatcher.setFuture(QtConcurrent::run(
-      [self, cancel,
-       inputs = std::make_shared<renderer::ErrorViewInputs>(std::move(inputs).value())]() {
+  // The exact trace of every pixel takes seconds on the CPU; progress in the status bar.
+  m_errorTask->run<core::UvErrorMap>(
+      [inputs = std::make_shared<renderer::ErrorViewInputs>(std::move(inputs).value())](
+          const core::WorkControl& control) {
         return core::computeUvErrorMap(
             inputs->finalUv, inputs->eyeRays, inputs->field,
-            [self, cancel](int done, int total) {
-              if (done % 16 != 0 || cancel->load())
-                return;
-              QMetaObject::invokeMethod(
-                  self,
-                  [self, done, total] {
-                    if (self)
-                      Q_EMIT self->errorViewProgress(done, total);
-                  },
-                  Qt::QueuedConnection);
+            [&control](int done, int total) {
+              if (done % 16 == 0)
+                control.report(double(done) / double(std::max(total, 1)));
             },
-            cancel.get());
-      }));
+            control.cancel);
+      },
+      [this](core::UvErrorMap&& map) {
+        m_errorMap = std::move(map);
+        m_errorImage = renderer::toDisplayImage(
+            core::colorizeErrorMap(*m_errorMap, core::kErrorDisplayTexels));
+        Q_EMIT errorViewProgress(0, 0);
+        Q_EMIT errorViewFinished(m_errorMap->mean, m_errorMap->p95, m_errorMap->maximum);
+        update();
+      });
 }
 
 void ViewportWidget::paintOverlays() {

@@ -11,7 +11,6 @@
 #include "core/view/ViewState.h"
 #include "renderer/FrameSettings.h"
 
-#include <QFutureWatcher>
 #include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -28,6 +27,10 @@ class MaterialRenderer;
 
 namespace relief::ui::inline document {
 class MaterialDocument;
+}
+
+namespace relief::ui::inline tasks {
+class BackgroundTask;
 }
 
 namespace relief::ui::inline viewport {
@@ -151,8 +154,7 @@ class ViewportWidget : public QOpenGLWidget {
   QPoint m_lastPos;
 
   // The error view: a CPU trace per frame, in the background.
-  QFutureWatcher<core::UvErrorMap> m_errorWatcher;
-  std::shared_ptr<std::atomic<bool>> m_errorCancel;
+  BackgroundTask* m_errorTask;  // the error view's exact trace
   bool m_errorStale = true;
   std::optional<core::UvErrorMap> m_errorMap;
   QImage m_errorImage;

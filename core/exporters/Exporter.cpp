@@ -1,0 +1,103 @@
+// Exporter; see Exporter.h.
+#include "core/exporters/Exporter.h"
+
+#include "core/exporters/GltfExport.h"
+#include "core/exporters/GodotExport.h"
+
+#include <array>
+
+namespace relief::core::inline exporters {
+namespace {
+
+constexpr std::array kKinds = {
+    ExportKindInfo{ExportKind::Package, "package", "Package: maps and a preset in a folder",
+                   "The maps in the chosen format and a .relief preset pointing at them: a "
+                   "folder to copy into another project or hand to a colleague.",
+                   false, true},
+    ExportKindInfo{ExportKind::Gltf, "gltf", "glTF 2.0: mesh and material (.gltf, .bin, textures)",
+                   "The mesh with a metallic-roughness material (base colour, normal, "
+                   "occlusion). glTF has no parallax: the height map and every Relief parameter "
+                   "go into the material's extras.relief. See docs/export.md.",
+                   true, false},
+    ExportKindInfo{ExportKind::Godot, "godot", "Godot 4: StandardMaterial3D (.tres and textures)",
+                   "Godot's heightmap settings converted from Relief's (scale, deep parallax, "
+                   "layers, flips); what Godot cannot show is listed after the export. See "
+                   "docs/export.md.",
+                   false, false},
+};
+
+constexpr std::array kMapFormats = {
+    ExportChoice<PackageMapFormat>{PackageMapFormat::Png16, "png16", "16-bit PNG"},
+    ExportChoice<PackageMapFormat>{PackageMapFormat::Png8, "png", "8-bit PNG (dithered)"},
+    ExportChoice<PackageMapFormat>{PackageMapFormat::Exr, "exr", "32-bit float EXR"},
+};
+
+constexpr std::array kTextureChoices = {
+    ExportChoice<PackageTextures>{PackageTextures::Ktx2, "ktx2", "KTX2"},
+    ExportChoice<PackageTextures>{PackageTextures::DdsWherePossible, "dds",
+                                  "DDS for BC formats, KTX2 for the rest"},
+    ExportChoice<PackageTextures>{PackageTextures::None, "none", "None"},
+};
+
+static_assert(kMapFormats[0].value == PackageOptions{}.dataMaps, "the first is the default");
+static_assert(kTextureChoices[0].value == PackageOptions{}.textures, "the first is the default");
+
+}  // namespace
+
+std::span<const ExportKindInfo> allExportKinds() {
+  return kKinds;
+}
+
+const ExportKindInfo& exportKindInfo(ExportKind kind) {
+  return kKinds[std::size_t(kind)];
+}
+
+std::optional<ExportKind> findExportKind(std::string_view name) {
+  for (const ExportKindInfo& info : kKinds) {
+    if (info.name == name)
+      return info.kind;
+  }
+  return std::nullopt;
+}
+
+std::span<const ExportChoice<PackageMapFormat>> packageMapFormats() {
+  return kMapFormats;
+}
+
+std::span<const ExportChoice<PackageTextures>> packageTextureChoices() {
+  return kTextureChoices;
+}
+
+Result<ExportResult> exportMaterial(const ExportRequest& request, const WorkControl& control) {
+  if (control.cancelled())
+    return makeError("cancelled");
+  ExportResult result;
+  switch (request.kind) {
+    case ExportKind::Package: {
+      Result<std::string> written =
+          exportPackage(request.preset, request.folder, request.package, control);
+      if (!written)
+        return makeError(written.error());
+      result.writtenPath = std::move(written).value();
+      break;
+    }
+    case ExportKind::Gltf: {
+      Result<std::string> written = exportGltf(request.preset, request.mesh, request.folder);
+      if (!written)
+        return makeError(written.error());
+      result.writtenPath = std::move(written).value();
+      break;
+    }
+    case ExportKind::Godot: {
+      Result<GodotExportResult> written = exportGodot(request.preset, request.folder);
+      if (!written)
+        return makeError(written.error());
+      result.writtenPath = written->tresPath;
+      result.notes = written->notes;
+      break;
+    }
+  }
+  return result;
+}
+
+}  // namespace relief::core::exporters
