@@ -18,9 +18,83 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <optional>
+
+namespace {
+
+using namespace relief;
+
+// The editor's start-up options, parsed before the window exists.
+struct StartOptions {
+  QStringList files;
+  QString screenshot;  // save a picture of the window, then quit
+  bool compare = false;
+  QString view;
+};
+
+StartOptions parseStartOptions(const QApplication& application) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral(
+      "Relief material editor. Opens the bundled bricks sample when started without files."));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addOptions({
+      {QStringLiteral("screenshot"),
+       QStringLiteral("Save a picture of the window to <file> once it has drawn, then quit."),
+       QStringLiteral("file")},
+      {QStringLiteral("compare"), QStringLiteral("Start with the A|B split comparison on.")},
+      {QStringLiteral("view"), QStringLiteral("Start with a debug view (as relief-cli --view)."),
+       QStringLiteral("name")},
+  });
+  parser.addPositionalArgument(QStringLiteral("files"),
+                               QStringLiteral("Presets (.relief) or maps (images) to open."),
+                               QStringLiteral("[files...]"));
+  parser.process(application);
+  return {parser.positionalArguments(), parser.value(QStringLiteral("screenshot")),
+          parser.isSet(QStringLiteral("compare")), parser.value(QStringLiteral("view"))};
+}
+
+// Opens the files (or the sample), then the comparison, view and screenshot asked for. Returns
+// an exit code when an option is wrong.
+std::optional<int> startWindow(ui::MainWindow& window, StartOptions options) {
+  window.setBundledPresetFolder(app::samplesDirectory());
+  window.show();
+  if (options.files.isEmpty() && ui::settings::openSampleOnStart()) {
+    const QString sample = app::defaultSamplePreset();
+    if (!sample.isEmpty())
+      options.files << sample;
+  }
+  window.openFiles(options.files);
+  // After a crash: offer the autosaved work (once the window is up, so the prompt has a parent).
+  if (options.screenshot.isEmpty())
+    QTimer::singleShot(0, &window, [&window] { window.files()->offerRecovery(); });
+  if (options.compare)
+    window.compareAction()->setChecked(true);
+  if (!options.view.isEmpty()) {
+    const int index = window.debugViewBox()->findData(options.view);
+    if (index < 0) {
+      std::fprintf(stderr, "relief: --view %s: unknown view\n",
+                   options.view.toLocal8Bit().constData());
+      return 2;
+    }
+    window.debugViewBox()->setCurrentIndex(index);
+    Q_EMIT window.debugViewBox()->activated(index);
+  }
+  if (!options.screenshot.isEmpty()) {
+    QTimer::singleShot(1500, &window, [&window, path = options.screenshot] {
+      // From the screen, so overlays painted over the GL frame are in the picture too.
+      const bool saved = window.screen()->grabWindow(window.winId()).save(path);
+      std::fprintf(saved ? stdout : stderr, "relief: %s %s\n", saved ? "saved" : "cannot save",
+                   path.toLocal8Bit().constData());
+      QApplication::exit(saved ? 0 : 1);
+    });
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 int main(int argc, char* argv[]) {
-  using namespace relief;
   if (const std::string problem = app::displayProblem(); !problem.empty()) {
     std::fprintf(stderr, "relief: %s\n", problem.c_str());
     return 1;
@@ -32,28 +106,7 @@ int main(int argc, char* argv[]) {
   QApplication::setOrganizationName(QStringLiteral("Relief"));
   QApplication::setApplicationVersion(QStringLiteral(RELIEF_VERSION));
   ui::applyDarkTheme(application);
-
-  QCommandLineParser parser;
-  parser.setApplicationDescription(QStringLiteral(
-      "Relief material editor. Opens the bundled bricks sample when started without files."));
-  parser.addHelpOption();
-  parser.addVersionOption();
-  const QCommandLineOption screenshot(
-      QStringLiteral("screenshot"),
-      QStringLiteral("Save a picture of the window to <file> once it has drawn, then quit."),
-      QStringLiteral("file"));
-  parser.addOption(screenshot);
-  const QCommandLineOption compare(QStringLiteral("compare"),
-                                   QStringLiteral("Start with the A|B split comparison on."));
-  parser.addOption(compare);
-  const QCommandLineOption view(QStringLiteral("view"),
-                                QStringLiteral("Start with a debug view (as relief-cli --view)."),
-                                QStringLiteral("name"));
-  parser.addOption(view);
-  parser.addPositionalArgument(QStringLiteral("files"),
-                               QStringLiteral("Presets (.relief) or maps (images) to open."),
-                               QStringLiteral("[files...]"));
-  parser.process(application);
+  const StartOptions options = parseStartOptions(application);
 
   // Qt crashes when a QOpenGLWidget gets no context; find out first and say so.
   if (core::Result<std::string> probe = renderer::probeOpenGL(); !probe) {
@@ -62,41 +115,8 @@ int main(int argc, char* argv[]) {
                           QString::fromStdString(probe.error()));
     return 1;
   }
-
   ui::MainWindow window;
-  window.setBundledPresetFolder(app::samplesDirectory());
-  window.show();
-  QStringList files = parser.positionalArguments();
-  if (files.isEmpty() && ui::settings::openSampleOnStart()) {
-    const QString sample = app::defaultSamplePreset();
-    if (!sample.isEmpty())
-      files << sample;
-  }
-  window.openFiles(files);
-  // After a crash: offer the autosaved work (once the window is up, so the prompt has a parent).
-  if (!parser.isSet(screenshot))
-    QTimer::singleShot(0, &window, [&window] { window.files()->offerRecovery(); });
-  if (parser.isSet(compare))
-    window.compareAction()->setChecked(true);
-  if (parser.isSet(view)) {
-    const int index = window.debugViewBox()->findData(parser.value(view));
-    if (index < 0) {
-      std::fprintf(stderr, "relief: --view %s: unknown view\n",
-                   parser.value(view).toLocal8Bit().constData());
-      return 2;
-    }
-    window.debugViewBox()->setCurrentIndex(index);
-    Q_EMIT window.debugViewBox()->activated(index);
-  }
-  if (parser.isSet(screenshot)) {
-    const QString path = parser.value(screenshot);
-    QTimer::singleShot(1500, &window, [&window, path] {
-      // From the screen, so overlays painted over the GL frame are in the picture too.
-      const bool saved = window.screen()->grabWindow(window.winId()).save(path);
-      std::fprintf(saved ? stdout : stderr, "relief: %s %s\n", saved ? "saved" : "cannot save",
-                   path.toLocal8Bit().constData());
-      QApplication::exit(saved ? 0 : 1);
-    });
-  }
+  if (auto exit = startWindow(window, options))
+    return *exit;
   return application.exec();
 }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace relief::cli {
 
@@ -59,6 +60,42 @@ std::optional<double> numberOption(const QCommandLineParser& parser, const QStri
   const double value = parser.value(name).toDouble(&ok);
   if (!ok || !std::isfinite(value)) {
     printError(QStringLiteral("--%1: '%2' is not a number").arg(name, parser.value(name)));
+    return std::nullopt;
+  }
+  return value;
+}
+
+void addOptions(QCommandLineParser& parser, const CliOptions& options) {
+  for (const CliOption& option : options) {
+    QString description = option.description;
+    if (!option.defaultValue.isEmpty() && !description.contains(QStringLiteral("default")))
+      description += QStringLiteral(" (default %1)").arg(option.defaultValue);
+    parser.addOption(
+        QCommandLineOption(option.name, description, option.valueName, option.defaultValue));
+  }
+}
+
+QString missingOptions(const QCommandLineParser& parser, const QStringList& required) {
+  QStringList missing;
+  for (const QString& name : required) {
+    if (!parser.isSet(name))
+      missing << QStringLiteral("--") + name;
+  }
+  return missing.join(QStringLiteral(", "));
+}
+
+std::optional<int> integerOption(const QCommandLineParser& parser, const QString& name,
+                                 int fallback, int minimum, int maximum) {
+  if (!parser.isSet(name))
+    return fallback;
+  bool ok = false;
+  const int value = parser.value(name).toInt(&ok);
+  if (!ok || value < minimum || value > maximum) {
+    const QString range = maximum == std::numeric_limits<int>::max()
+                              ? QStringLiteral("of at least %1").arg(minimum)
+                              : QStringLiteral("from %1 to %2").arg(minimum).arg(maximum);
+    printError(
+        QStringLiteral("--%1: '%2' is not a whole number %3").arg(name, parser.value(name), range));
     return std::nullopt;
   }
   return value;

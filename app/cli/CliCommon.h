@@ -10,6 +10,8 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <vector>
 
 namespace relief::cli {
 
@@ -29,9 +31,54 @@ QStringList argumentsFrom(int argc, char* argv[]);
 std::optional<int> parseOrExit(QCommandLineParser& parser, const QStringList& arguments,
                                const QString& usage);
 
+// One option of a command, declared once: the command's table is what parsing and --help
+// read. An empty valueName makes a flag; defaultValue is what value() returns when the option is
+// not given (and --help says so).
+struct CliOption {
+  QString name;
+  QString valueName;
+  QString description;
+  QString defaultValue;
+};
+using CliOptions = std::vector<CliOption>;
+
+void addOptions(QCommandLineParser& parser, const CliOptions& options);
+
+// Which of `required` are missing, as "--a, --b"; empty when all are given.
+QString missingOptions(const QCommandLineParser& parser, const QStringList& required);
+
+// A value from a table of named entries (anything with .name; `valueOf` picks the value, by
+// default .value, e.g. core's export choices); prints "--option X: expected a|b|c" and returns
+// nullopt when the option's value names none of them.
+template <class Table, class ValueOf>
+auto namedOption(const QCommandLineParser& parser, const QString& option, const Table& table,
+                 ValueOf valueOf)
+    -> std::optional<std::decay_t<decltype(valueOf(*std::begin(table)))>> {
+  const QString given = parser.value(option);
+  QStringList names;
+  for (const auto& entry : table) {
+    const QString name = QString::fromUtf8(entry.name.data(), qsizetype(entry.name.size()));
+    if (name == given)
+      return valueOf(entry);
+    names << name;
+  }
+  printError(
+      QStringLiteral("--%1 %2: expected %3").arg(option, given, names.join(QLatin1Char('|'))));
+  return std::nullopt;
+}
+
+template <class Table>
+auto namedOption(const QCommandLineParser& parser, const QString& option, const Table& table) {
+  return namedOption(parser, option, table, [](const auto& entry) { return entry.value; });
+}
+
 // Parses a number option; prints an error naming the option and returns nullopt when bad.
 std::optional<double> numberOption(const QCommandLineParser& parser, const QString& name,
                                    double fallback);
+
+// Parses a whole-number option within [minimum, maximum]; "0.5" or "1e3" is refused.
+std::optional<int> integerOption(const QCommandLineParser& parser, const QString& name,
+                                 int fallback, int minimum, int maximum);
 
 // A mesh by --mesh's value: a primitive's name (plane, cube, ...) or a mesh file; an empty
 // name is the plane. Returns an exit code after printing the problem when it cannot be had.

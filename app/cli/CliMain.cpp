@@ -1,4 +1,6 @@
-// relief-cli: Relief's command-line twin. Dispatches to one command per verb.
+// relief-cli: Relief's command-line twin. One table of commands (name, summary, entry point)
+// that dispatch, the usage text and `relief-cli help` read; each command's options are a table
+// in its own file.
 #include "CliCommon.h"
 #include "CompressCommand.h"
 #include "ExportCommand.h"
@@ -9,55 +11,68 @@
 
 #include <QCoreApplication>
 
+#include <array>
 #include <cstring>
 
 namespace {
 
-const char* kUsage =
-    "Usage: relief-cli <command> [options]\n"
-    "\n"
-    "Commands:\n"
-    "  render   Render a preset or maps offscreen to an image (needs an X display)\n"
-    "  generate Make maps from other maps: normal, height, height-from-color, ao,\n"
-    "           curvature, pack\n"
-    "  info     Print an image's size, channels, bit depth and colour space\n"
-    "  preset   validate FILE: check a .relief preset; info FILE: print what it holds\n"
-    "  export   Export a preset as a package, glTF 2.0 or a Godot 4 material\n"
-    "  compress Compress a map into BC1-BC5, DXT5nm, ETC1/ETC2, EAC or ASTC (DDS, KTX2)\n"
-    "  decode   Decode a DDS or KTX2 file to an image\n"
-    "  compare  Print quality metrics between a reference and a candidate image or texture\n"
-    "\n"
-    "Run 'relief-cli <command> --help' for a command's options.\n";
+using namespace relief::cli;
+
+struct Command {
+  const char* name;
+  const char* summary;
+  // render makes its own QGuiApplication (it needs a display); the rest run in a
+  // QCoreApplication made here.
+  int (*runWithArgv)(int argc, char* argv[]);
+  int (*run)(const QStringList& arguments);
+};
+
+const std::array kCommands = {
+    Command{"render", "Render a preset or maps offscreen to an image (needs an X display)",
+            runRender, nullptr},
+    Command{"generate",
+            "Make maps from other maps: normal, height, height-from-color, ao, curvature, pack",
+            nullptr, runGenerate},
+    Command{"info", "Print an image's size, channels, bit depth and colour space", nullptr,
+            runInfo},
+    Command{"preset", "validate FILE: check a .relief preset; info FILE: print what it holds",
+            nullptr, runPreset},
+    Command{"export", "Export a preset as a package, glTF 2.0 or a Godot 4 material", nullptr,
+            runExport},
+    Command{"compress", "Compress a map into BC1-BC5, DXT5nm, ETC1/ETC2, EAC or ASTC (DDS, KTX2)",
+            nullptr, runCompress},
+    Command{"decode", "Decode a DDS or KTX2 file to an image", nullptr, runDecode},
+    Command{"compare", "Print quality metrics between a reference and a candidate image or texture",
+            nullptr, runCompare},
+};
+
+QString usage() {
+  QString text = QStringLiteral("Usage: relief-cli <command> [options]\n\nCommands:\n");
+  for (const Command& command : kCommands) {
+    text += QStringLiteral("  %1 %2\n")
+                .arg(QString::fromLatin1(command.name), -8)
+                .arg(QString::fromUtf8(command.summary));
+  }
+  return text + QStringLiteral("\nRun 'relief-cli <command> --help' for a command's options.\n");
+}
 
 }  // namespace
 
 int main(int argc, char* argv[]) {
-  using namespace relief::cli;
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0 ||
       std::strcmp(argv[1], "help") == 0) {
-    printOut(QString::fromUtf8(kUsage));
+    printOut(usage());
     return argc < 2 ? kExitUsage : kExitOk;
   }
-  const QString command = QString::fromLocal8Bit(argv[1]);
-  if (command == QStringLiteral("render"))
-    return runRender(argc, argv);
-
-  QCoreApplication application(argc, argv);
-  if (command == QStringLiteral("info"))
-    return runInfo(QCoreApplication::arguments());
-  if (command == QStringLiteral("generate"))
-    return runGenerate(QCoreApplication::arguments());
-  if (command == QStringLiteral("preset"))
-    return runPreset(QCoreApplication::arguments());
-  if (command == QStringLiteral("export"))
-    return runExport(QCoreApplication::arguments());
-  if (command == QStringLiteral("compress"))
-    return runCompress(QCoreApplication::arguments());
-  if (command == QStringLiteral("decode"))
-    return runDecode(QCoreApplication::arguments());
-  if (command == QStringLiteral("compare"))
-    return runCompare(QCoreApplication::arguments());
-  printError(QStringLiteral("unknown command '%1'").arg(command));
-  printOut(QString::fromUtf8(kUsage));
+  for (const Command& command : kCommands) {
+    if (std::strcmp(argv[1], command.name) != 0)
+      continue;
+    if (command.runWithArgv)
+      return command.runWithArgv(argc, argv);
+    QCoreApplication application(argc, argv);
+    return command.run(QCoreApplication::arguments());
+  }
+  printError(QStringLiteral("unknown command '%1'").arg(QString::fromLocal8Bit(argv[1])));
+  printOut(usage());
   return kExitUsage;
 }

@@ -8,6 +8,8 @@
 
 #include <QJsonDocument>
 
+#include <limits>
+
 namespace relief::cli {
 namespace {
 
@@ -48,17 +50,47 @@ core::Result<Candidate> loadCandidate(const std::string& path) {
   return Candidate{std::move(image).value(), std::nullopt};
 }
 
-void addSlotOptions(QCommandLineParser& parser) {
-  parser.addOption(QCommandLineOption(QStringLiteral("normal"),
-                                      QStringLiteral("The map is a normal map (tangent space, "
-                                                     "0.5 + 0.5 n): angular error is measured.")));
-  parser.addOption(QCommandLineOption(
-      QStringLiteral("height"),
-      QStringLiteral("The map is a height map: the error is also given as parallax shift.")));
-  parser.addOption(QCommandLineOption(
-      QStringLiteral("height-scale"),
-      QStringLiteral("Parallax height scale for the shift (default %1).").arg(kDefaultHeightScale),
-      QStringLiteral("scale")));
+CliOptions slotOptions() {
+  return {
+      {QStringLiteral("normal"),
+       {},
+       QStringLiteral("The map is a normal map (tangent space, 0.5 + 0.5 n): angular error is "
+                      "measured."),
+       {}},
+      {QStringLiteral("height"),
+       {},
+       QStringLiteral("The map is a height map: the error is also given as parallax shift."),
+       {}},
+      {QStringLiteral("height-scale"), QStringLiteral("scale"),
+       QStringLiteral("Parallax height scale for the shift."),
+       QString::number(kDefaultHeightScale)},
+  };
+}
+
+CliOptions compressOptions() {
+  CliOptions options = {
+      {QStringLiteral("in"), QStringLiteral("file"), QStringLiteral("The map."), {}},
+      {QStringLiteral("format"), QStringLiteral("format"), formatNames(), {}},
+      {QStringLiteral("quality"), QStringLiteral("quality"),
+       QStringLiteral("fast|normal|best: libsquish range fit, cluster fit, iterative cluster "
+                      "fit; astcenc's presets; EAC search depth."),
+       QStringLiteral("normal")},
+      {QStringLiteral("mips"),
+       {},
+       QStringLiteral("Write a full mip chain, each level filtered for the map's kind."),
+       {}},
+      {QStringLiteral("out"),
+       QStringLiteral("file"),
+       QStringLiteral("Output .dds or .ktx2 file."),
+       {}},
+      {QStringLiteral("metrics"),
+       QStringLiteral("text|json"),
+       QStringLiteral("Print the quality metrics: text or json (on standard output)."),
+       {}},
+  };
+  for (CliOption& option : slotOptions())
+    options.push_back(std::move(option));
+  return options;
 }
 
 std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser) {
@@ -69,40 +101,9 @@ std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser) {
   return std::nullopt;
 }
 
-}  // namespace
-
-int runCompress(const QStringList& arguments) {
-  QCommandLineParser parser;
-  parser.setApplicationDescription(QStringLiteral(
-      "Compress a map into a GPU block format and save it as DDS (BC formats) or KTX2 (all)."));
-  parser.addOption(
-      QCommandLineOption(QStringLiteral("in"), QStringLiteral("The map."), QStringLiteral("file")));
-  parser.addOption(
-      QCommandLineOption(QStringLiteral("format"), formatNames(), QStringLiteral("format")));
-  parser.addOption(QCommandLineOption(
-      QStringLiteral("quality"),
-      QStringLiteral("fast|normal|best (default normal): libsquish range fit, cluster fit, "
-                     "iterative cluster fit; astcenc's presets; EAC search depth."),
-      QStringLiteral("quality")));
-  parser.addOption(QCommandLineOption(QStringLiteral("mips"),
-                                      QStringLiteral("Write a full mip chain, each level "
-                                                     "filtered for the map's kind.")));
-  parser.addOption(QCommandLineOption(
-      QStringLiteral("out"), QStringLiteral("Output .dds or .ktx2 file."), QStringLiteral("file")));
-  parser.addOption(QCommandLineOption(
-      QStringLiteral("metrics"),
-      QStringLiteral("Print the quality metrics: text or json (on standard output)."),
-      QStringLiteral("text|json")));
-  addSlotOptions(parser);
-  if (auto exit = parseOrExit(parser, arguments,
-                              QStringLiteral("relief-cli compress --in MAP --format FORMAT "
-                                             "--out MAP.dds|MAP.ktx2 [options]")))
-    return *exit;
-  if (!parser.isSet(QStringLiteral("in")) || !parser.isSet(QStringLiteral("out")) ||
-      !parser.isSet(QStringLiteral("format"))) {
-    printError(QStringLiteral("compress needs --in MAP, --format FORMAT and --out FILE"));
-    return kExitUsage;
-  }
+// The job (the map loaded), the output path and where it goes; an exit code when they are wrong.
+std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJob& job,
+                            std::string& outPath) {
   const std::optional<core::TextureFormat> format =
       core::findTextureFormat(parser.value(QStringLiteral("format")).toStdString());
   if (!format) {
@@ -110,16 +111,12 @@ int runCompress(const QStringList& arguments) {
                    .arg(parser.value(QStringLiteral("format")), formatNames()));
     return kExitUsage;
   }
-  core::CompressionQuality quality = core::CompressionQuality::Normal;
-  if (parser.isSet(QStringLiteral("quality"))) {
-    const auto found =
-        core::findCompressionQuality(parser.value(QStringLiteral("quality")).toStdString());
-    if (!found) {
-      printError(QStringLiteral("--quality: '%1' is not fast, normal or best")
-                     .arg(parser.value(QStringLiteral("quality"))));
-      return kExitUsage;
-    }
-    quality = *found;
+  const auto quality =
+      core::findCompressionQuality(parser.value(QStringLiteral("quality")).toStdString());
+  if (!quality) {
+    printError(QStringLiteral("--quality: '%1' is not fast, normal or best")
+                   .arg(parser.value(QStringLiteral("quality"))));
+    return kExitUsage;
   }
   const QString metrics = parser.value(QStringLiteral("metrics"));
   if (parser.isSet(QStringLiteral("metrics")) && metrics != QStringLiteral("json") &&
@@ -131,7 +128,7 @@ int runCompress(const QStringList& arguments) {
       numberOption(parser, QStringLiteral("height-scale"), kDefaultHeightScale);
   if (!heightScale)
     return kExitUsage;
-  const std::string outPath = parser.value(QStringLiteral("out")).toStdString();
+  outPath = parser.value(QStringLiteral("out")).toStdString();
   const std::optional<core::TextureContainer> container = core::containerForPath(outPath);
   if (!container) {
     printError(QString::fromStdString(outPath) +
@@ -144,7 +141,6 @@ int runCompress(const QStringList& arguments) {
                QStringLiteral(" has no DDS format that common readers open; use .ktx2"));
     return kExitUsage;
   }
-
   const std::string inPath = parser.value(QStringLiteral("in")).toStdString();
   core::Result<core::Image> map = core::loadImage(inPath);
   if (!map) {
@@ -152,11 +148,10 @@ int runCompress(const QStringList& arguments) {
     return kExitFailure;
   }
   // Without --normal or --height a map is colour, except that a one-channel format holds data.
-  core::CompressionJob job;
   job.slot = slotOption(parser).value_or(
       core::isSingleChannelFormat(*format) ? core::MapSlot::Height : core::MapSlot::Color);
   job.map = std::make_shared<const core::Image>(std::move(map).value());
-  job.settings = {*format, quality, parser.isSet(QStringLiteral("mips"))};
+  job.settings = {*format, *quality, parser.isSet(QStringLiteral("mips"))};
   job.heightScale = *heightScale;
   job.measure = parser.isSet(QStringLiteral("metrics"));
   if (core::Result<std::vector<std::string>> check =
@@ -167,35 +162,56 @@ int runCompress(const QStringList& arguments) {
                               "format"));
     return kExitUsage;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+int runCompress(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral(
+      "Compress a map into a GPU block format and save it as DDS (BC formats) or KTX2 (all)."));
+  addOptions(parser, compressOptions());
+  if (auto exit = parseOrExit(parser, arguments,
+                              QStringLiteral("relief-cli compress --in MAP --format FORMAT "
+                                             "--out MAP.dds|MAP.ktx2 [options]")))
+    return *exit;
+  if (!missingOptions(parser,
+                      {QStringLiteral("in"), QStringLiteral("out"), QStringLiteral("format")})
+           .isEmpty()) {
+    printError(QStringLiteral("compress needs --in MAP, --format FORMAT and --out FILE"));
+    return kExitUsage;
+  }
+  core::CompressionJob job;
+  std::string outPath;
+  if (auto exit = buildJob(parser, job, outPath))
+    return *exit;
+  const QString inPath = parser.value(QStringLiteral("in"));
   core::Result<core::CompressionOutcome> outcome = core::runCompressionJob(job);
   if (!outcome) {
-    printError(QString::fromStdString(inPath) + QStringLiteral(": ") +
-               QString::fromStdString(outcome.error()));
+    printError(inPath + QStringLiteral(": ") + QString::fromStdString(outcome.error()));
     return kExitFailure;
   }
-  for (const std::string& warning : outcome->warnings) {
-    printError(QStringLiteral("warning: %1: %2")
-                   .arg(QString::fromStdString(inPath), QString::fromStdString(warning)));
-  }
+  for (const std::string& warning : outcome->warnings)
+    printError(QStringLiteral("warning: %1: %2").arg(inPath, QString::fromStdString(warning)));
   const core::CompressedTexture& texture = *outcome->texture;
   if (core::Status saved = core::saveCompressedTexture(texture, outPath); !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
   }
-  if (job.measure) {
-    if (metrics == QStringLiteral("json")) {
-      printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(outcome->report)).toJson()));
-    } else {
-      printOut(QString::fromStdString(core::reportToText(outcome->report)));
-    }
-  } else {
+  if (!job.measure) {
     printOut(QStringLiteral("%1: %2, %3x%4, %5 level(s), %6 bytes, %7 s\n")
-                 .arg(QString::fromStdString(outPath), qstr(core::textureFormatInfo(*format).label))
+                 .arg(QString::fromStdString(outPath),
+                      qstr(core::textureFormatInfo(job.settings.format).label))
                  .arg(job.map->width())
                  .arg(job.map->height())
                  .arg(texture.levels.size())
                  .arg(texture.byteSize())
                  .arg(outcome->report.encodeSeconds, 0, 'f', 2));
+  } else if (parser.value(QStringLiteral("metrics")) == QStringLiteral("json")) {
+    printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(outcome->report)).toJson()));
+  } else {
+    printOut(QString::fromStdString(core::reportToText(outcome->report)));
   }
   return kExitOk;
 }
@@ -206,12 +222,11 @@ int runDecode(const QStringList& arguments) {
       "Decode a DDS or KTX2 file to an image: the map it holds (normal Z rebuilt from X and Y "
       "for two-channel formats), or with --raw the RGBA texels a GPU samples."));
   parser.addPositionalArgument(QStringLiteral("texture"), QStringLiteral(".dds or .ktx2 file"));
-  parser.addOption(QCommandLineOption(QStringLiteral("out"), QStringLiteral("Output image."),
-                                      QStringLiteral("file")));
-  parser.addOption(QCommandLineOption(
-      QStringLiteral("level"), QStringLiteral("Mip level (default 0)."), QStringLiteral("n")));
-  parser.addOption(
-      QCommandLineOption(QStringLiteral("raw"), QStringLiteral("Write the texels unchanged.")));
+  addOptions(parser,
+             {{QStringLiteral("out"), QStringLiteral("file"), QStringLiteral("Output image."), {}},
+              {QStringLiteral("level"), QStringLiteral("n"), QStringLiteral("Mip level."),
+               QStringLiteral("0")},
+              {QStringLiteral("raw"), {}, QStringLiteral("Write the texels unchanged."), {}}});
   if (auto exit = parseOrExit(parser, arguments,
                               QStringLiteral("relief-cli decode F.dds|F.ktx2 --out F.png")))
     return *exit;
@@ -219,7 +234,8 @@ int runDecode(const QStringList& arguments) {
     printError(QStringLiteral("decode takes one .dds or .ktx2 file and --out FILE"));
     return kExitUsage;
   }
-  const std::optional<double> level = numberOption(parser, QStringLiteral("level"), 0.0);
+  const std::optional<int> level =
+      integerOption(parser, QStringLiteral("level"), 0, 0, std::numeric_limits<int>::max());
   if (!level)
     return kExitUsage;
   const std::string path = parser.positionalArguments().front().toStdString();
@@ -229,8 +245,8 @@ int runDecode(const QStringList& arguments) {
     return kExitFailure;
   }
   core::Result<core::Image> image = parser.isSet(QStringLiteral("raw"))
-                                        ? core::decodeLevel(texture.value(), int(*level))
-                                        : core::decodeAsMap(texture.value(), int(*level));
+                                        ? core::decodeLevel(texture.value(), *level)
+                                        : core::decodeAsMap(texture.value(), *level);
   if (!image) {
     printError(QString::fromStdString(path + ": " + image.error()));
     return kExitFailure;
@@ -245,7 +261,7 @@ int runDecode(const QStringList& arguments) {
           .arg(QString::fromStdString(out), qstr(core::textureFormatInfo(texture->format).label))
           .arg(image->width())
           .arg(image->height())
-          .arg(int(*level))
+          .arg(*level)
           .arg(texture->levels.size()));
   return kExitOk;
 }
@@ -259,9 +275,9 @@ int runCompare(const QStringList& arguments) {
   parser.addPositionalArgument(QStringLiteral("reference"), QStringLiteral("The original."));
   parser.addPositionalArgument(QStringLiteral("candidate"),
                                QStringLiteral("An image or a .dds/.ktx2 file."));
-  parser.addOption(
-      QCommandLineOption(QStringLiteral("json"), QStringLiteral("Print the metrics as JSON.")));
-  addSlotOptions(parser);
+  CliOptions options = slotOptions();
+  options.push_back({QStringLiteral("json"), {}, QStringLiteral("Print the metrics as JSON."), {}});
+  addOptions(parser, options);
   if (auto exit =
           parseOrExit(parser, arguments,
                       QStringLiteral("relief-cli compare REFERENCE CANDIDATE [--normal] [--json]")))

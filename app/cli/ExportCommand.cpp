@@ -1,100 +1,78 @@
-// ExportCommand; see ExportCommand.h.
+// ExportCommand; see ExportCommand.h. The kinds, the package's choices and the work are core's
+// (core/exporters/Exporter.h); this file parses the options and prints what was written.
 #include "ExportCommand.h"
 
 #include "CliCommon.h"
-#include "core/exporters/GltfExport.h"
-#include "core/exporters/GodotExport.h"
-#include "core/exporters/PackageExport.h"
-#include "core/material/MaterialPreset.h"
+#include "core/exporters/Exporter.h"
 
 namespace relief::cli {
 namespace {
 
-std::optional<core::PackageMapFormat> packageFormat(const QString& name) {
-  if (name == QStringLiteral("png"))
-    return core::PackageMapFormat::Png8;
-  if (name == QStringLiteral("png16"))
-    return core::PackageMapFormat::Png16;
-  if (name == QStringLiteral("exr"))
-    return core::PackageMapFormat::Exr;
-  return std::nullopt;
+QString qstr(std::string_view text) {
+  return QString::fromUtf8(text.data(), qsizetype(text.size()));
 }
 
-}  // namespace
+template <class Choices>
+QString choiceNames(const Choices& choices) {
+  QStringList names;
+  for (const auto& choice : choices)
+    names << qstr(choice.name);
+  return names.join(QLatin1Char('|'));
+}
 
-int runExport(const QStringList& arguments) {
-  QCommandLineParser parser;
-  parser.setApplicationDescription(QStringLiteral(
-      "Export a preset's material:\n"
-      "  package  a folder with the maps and a preset that points at them\n"
-      "  gltf     glTF 2.0 (.gltf, .bin, PNG textures) of the mesh with the material; the\n"
-      "           height map and parallax parameters go in the material's extras.relief\n"
-      "  godot    a Godot 4 StandardMaterial3D .tres with its heightmap settings\n"
-      "See docs/export.md for how parameters convert."));
-  const auto option = [&](const QString& name, const QString& help, const QString& value,
-                          const QString& fallback = {}) {
-    parser.addOption(QCommandLineOption(name, help, value, fallback));
+QString description() {
+  QString text = QStringLiteral("Export a preset's material:\n");
+  for (const core::ExportKindInfo& kind : core::allExportKinds())
+    text += QStringLiteral("  %1 %2\n").arg(qstr(kind.name), -8).arg(qstr(kind.label));
+  return text + QStringLiteral("See docs/export.md for how parameters convert.");
+}
+
+CliOptions options() {
+  return {
+      {QStringLiteral("preset"), QStringLiteral("file"), QStringLiteral("The .relief preset."), {}},
+      {QStringLiteral("to"), QStringLiteral("kind"), choiceNames(core::allExportKinds()) + ".", {}},
+      {QStringLiteral("out"),
+       QStringLiteral("folder"),
+       QStringLiteral("The folder to write (created if needed)."),
+       {}},
+      {QStringLiteral("mesh"),
+       QStringLiteral("name|file"),
+       QStringLiteral("gltf: plane, cube, sphere, cylinder, torus or a mesh file (default: the "
+                      "preset's mesh, else plane)."),
+       {}},
+      {QStringLiteral("maps"), QStringLiteral("format"),
+       QStringLiteral("package: data maps as %1; the colour map stays 8-bit sRGB PNG.")
+           .arg(choiceNames(core::packageMapFormats())),
+       qstr(core::packageMapFormats().front().name)},
+      {QStringLiteral("textures"), QStringLiteral("container"),
+       QStringLiteral("package: maps with a compression choice in the preset are also written "
+                      "compressed: %1 (dds holds the BC formats; KTX2 the rest).")
+           .arg(choiceNames(core::packageTextureChoices())),
+       qstr(core::packageTextureChoices().front().name)},
+      {QStringLiteral("strict"),
+       {},
+       QStringLiteral("Fail when the preset has problems (a missing map, a clamped value) "
+                      "instead of exporting what loaded."),
+       {}},
   };
-  option(QStringLiteral("preset"), QStringLiteral("The .relief preset to export."),
-         QStringLiteral("file"));
-  option(QStringLiteral("to"), QStringLiteral("package, gltf or godot."), QStringLiteral("kind"));
-  option(QStringLiteral("out"), QStringLiteral("The folder to write (created if needed)."),
-         QStringLiteral("folder"));
-  option(QStringLiteral("mesh"),
-         QStringLiteral("gltf: plane, cube, sphere, cylinder, torus or a mesh file (default: the "
-                        "preset's mesh, else plane)."),
-         QStringLiteral("name|file"));
-  option(QStringLiteral("maps"),
-         QStringLiteral("package: data maps as png (8-bit, dithered), png16 or exr (default "
-                        "png16); the colour map stays 8-bit sRGB PNG."),
-         QStringLiteral("format"), QStringLiteral("png16"));
-  option(QStringLiteral("textures"),
-         QStringLiteral("package: maps with a compression choice in the preset are also written "
-                        "compressed, as ktx2 (default), dds (BC formats; KTX2 for the rest) or "
-                        "none."),
-         QStringLiteral("container"), QStringLiteral("ktx2"));
-  parser.addOption(QCommandLineOption(
-      QStringLiteral("strict"),
-      QStringLiteral("Fail when the preset has problems (a missing map, a clamped value) "
-                     "instead of exporting what loaded.")));
-  if (auto exit = parseOrExit(parser, arguments,
-                              QStringLiteral("relief-cli export --preset <file> --to "
-                                             "<package|gltf|godot> --out <folder>"))) {
-    return *exit;
-  }
-  for (const char* required : {"preset", "to", "out"}) {
-    if (!parser.isSet(QString::fromLatin1(required))) {
-      printError(QStringLiteral("export needs --%1 (see --help)").arg(QLatin1String(required)));
-      return kExitUsage;
-    }
-  }
-  const QString kind = parser.value(QStringLiteral("to"));
-  if (kind != QStringLiteral("package") && kind != QStringLiteral("gltf") &&
-      kind != QStringLiteral("godot")) {
-    printError(QStringLiteral("--to %1: expected package, gltf or godot").arg(kind));
-    return kExitUsage;
-  }
-  const std::optional<core::PackageMapFormat> mapFormat =
-      packageFormat(parser.value(QStringLiteral("maps")));
-  if (!mapFormat) {
-    printError(QStringLiteral("--maps %1: expected png, png16 or exr")
-                   .arg(parser.value(QStringLiteral("maps"))));
-    return kExitUsage;
-  }
+}
 
-  const QString texturesName = parser.value(QStringLiteral("textures"));
-  const core::PackageTextures textures =
-      texturesName == QStringLiteral("dds")    ? core::PackageTextures::DdsWherePossible
-      : texturesName == QStringLiteral("none") ? core::PackageTextures::None
-                                               : core::PackageTextures::Ktx2;
-  if (texturesName != QStringLiteral("ktx2") && texturesName != QStringLiteral("dds") &&
-      texturesName != QStringLiteral("none")) {
-    printError(QStringLiteral("--textures %1: expected ktx2, dds or none").arg(texturesName));
+// The request from the options and the preset; an exit code when they are wrong.
+std::optional<int> buildRequest(const QCommandLineParser& parser, core::ExportRequest& request) {
+  const std::optional<core::ExportKind> kind =
+      namedOption(parser, QStringLiteral("to"), core::allExportKinds(),
+                  [](const core::ExportKindInfo& info) { return info.kind; });
+  const auto mapFormat = namedOption(parser, QStringLiteral("maps"), core::packageMapFormats());
+  const auto textures =
+      namedOption(parser, QStringLiteral("textures"), core::packageTextureChoices());
+  if (!kind || !mapFormat || !textures)
     return kExitUsage;
-  }
+  request.kind = *kind;
+  request.folder = parser.value(QStringLiteral("out")).toStdString();
+  request.package = {*mapFormat, *textures};
 
-  const QString presetPath = parser.value(QStringLiteral("preset"));
-  core::Result<core::LoadedPreset> loaded = core::loadPreset(presetPath.toStdString());
+  core::Result<core::LoadedPreset> loaded =
+      core::loadPreset(parser.value(QStringLiteral("preset")).toStdString());
   if (!loaded) {
     printError(QString::fromStdString(loaded.error()));
     return kExitFailure;
@@ -106,39 +84,44 @@ int runExport(const QStringList& arguments) {
   }
   if (strict && !loaded->warnings.empty())
     return kExitFailure;
-  const core::Preset& preset = loaded->preset;
-  const std::string folder = parser.value(QStringLiteral("out")).toStdString();
-
-  if (kind == QStringLiteral("package")) {
-    core::Result<std::string> written = core::exportPackage(preset, folder, {*mapFormat, textures});
-    if (!written) {
-      printError(QString::fromStdString(written.error()));
-      return kExitFailure;
-    }
-    printOut(QStringLiteral("wrote %1\n").arg(QString::fromStdString(written.value())));
-    return kExitOk;
-  }
-  if (kind == QStringLiteral("gltf")) {
+  request.preset = std::move(loaded->preset);
+  if (core::exportKindInfo(request.kind).usesMesh) {
     const QString meshName = parser.isSet(QStringLiteral("mesh"))
                                  ? parser.value(QStringLiteral("mesh"))
-                                 : QString::fromStdString(preset.view.mesh);
-    core::Mesh mesh;
-    if (auto exit = resolveMesh(meshName, mesh))
+                                 : QString::fromStdString(request.preset.view.mesh);
+    if (auto exit = resolveMesh(meshName, request.mesh))
       return *exit;
-    core::Result<std::string> written = core::exportGltf(preset, mesh, folder);
-    if (!written) {
-      printError(QString::fromStdString(written.error()));
-      return kExitFailure;
-    }
-    printOut(QStringLiteral("wrote %1\n").arg(QString::fromStdString(written.value())));
-    return kExitOk;
   }
-  core::Result<core::GodotExportResult> written = core::exportGodot(preset, folder);
+  return std::nullopt;
+}
+
+}  // namespace
+
+int runExport(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(description());
+  addOptions(parser, options());
+  if (auto exit = parseOrExit(parser, arguments,
+                              QStringLiteral("relief-cli export --preset <file> --to <%1> --out "
+                                             "<folder>")
+                                  .arg(choiceNames(core::allExportKinds())))) {
+    return *exit;
+  }
+  if (const QString missing = missingOptions(
+          parser, {QStringLiteral("preset"), QStringLiteral("to"), QStringLiteral("out")});
+      !missing.isEmpty()) {
+    printError(QStringLiteral("export needs %1 (see --help)").arg(missing));
+    return kExitUsage;
+  }
+  core::ExportRequest request;
+  if (auto exit = buildRequest(parser, request))
+    return *exit;
+  core::Result<core::ExportResult> written = core::exportMaterial(request);
   if (!written) {
     printError(QString::fromStdString(written.error()));
     return kExitFailure;
   }
-  printOut(QStringLiteral("wrote %1\n").arg(QString::fromStdString(written->tresPath)));
+  printOut(QStringLiteral("wrote %1\n").arg(QString::fromStdString(written->writtenPath)));
   for (const std::string& note : written->notes)
     printOut(QStringLiteral("note: %1\n").arg(QString::fromStdString(note)));
   return kExitOk;

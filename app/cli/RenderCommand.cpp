@@ -3,6 +3,7 @@
 
 #include "../DisplayCheck.h"
 #include "CliCommon.h"
+#include "core/image/ImageFileTypes.h"
 #include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshImport.h"
@@ -35,7 +36,71 @@ QString parameterHelp() {
   return text;
 }
 
-// The error view's colour scale in PNG output: a quarter texel and more is red.
+// The option that gives a slot's map is the slot's name: --color, --normal, --height, --ao,
+// --roughness.
+QString mapOptionName(core::MapSlot slot) {
+  return QString::fromUtf8(core::mapSlotName(slot).data(),
+                           qsizetype(core::mapSlotName(slot).size()));
+}
+
+CliOptions renderOptions() {
+  const QString file = QStringLiteral("file"), degrees = QStringLiteral("deg");
+  CliOptions options = {
+      {QStringLiteral("out"),
+       file,
+       QStringLiteral("Output image (png, jpg, tga, tif, or exr)."),
+       {}},
+      {QStringLiteral("size"), QStringLiteral("WxH"), QStringLiteral("Image size in pixels."),
+       QStringLiteral("1280x720")},
+      {QStringLiteral("yaw"), degrees, QStringLiteral("Camera yaw around +Y in degrees."), {}},
+      {QStringLiteral("pitch"),
+       degrees,
+       QStringLiteral("Camera elevation in degrees (-89..89)."),
+       {}},
+      {QStringLiteral("distance"),
+       QStringLiteral("D"),
+       QStringLiteral("Camera distance from the target (default: frames the mesh)."),
+       {}},
+      {QStringLiteral("light-yaw"), degrees, QStringLiteral("Light azimuth in degrees."), {}},
+      {QStringLiteral("light-pitch"), degrees, QStringLiteral("Light elevation in degrees."), {}},
+      {QStringLiteral("set"),
+       QStringLiteral("name=value"),
+       QStringLiteral("Set a material parameter (repeatable)."),
+       {}},
+  };
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    options.push_back(
+        {mapOptionName(slot),
+         file,
+         QStringLiteral("%1 map%2.")
+             .arg(QString::fromUtf8(core::mapSlotLabel(slot).data(),
+                                    qsizetype(core::mapSlotLabel(slot).size())),
+                  slot == core::MapSlot::Normal ? QStringLiteral(" (flat when omitted)")
+                                                : QString()),
+         {}});
+  }
+  options.push_back({QStringLiteral("mesh"), QStringLiteral("name|file"),
+                     enumNames(core::allPrimitiveShapes(), core::primitiveShapeName) +
+                         QStringLiteral(", or a mesh file (OBJ, FBX, glTF, ...)."),
+                     QStringLiteral("plane")});
+  options.push_back({QStringLiteral("technique"),
+                     QStringLiteral("name"),
+                     QStringLiteral("Overrides the preset's technique: ") +
+                         enumNames(core::allTechniques(), core::techniqueName) + QLatin1Char('.'),
+                     {}});
+  options.push_back({QStringLiteral("view"), QStringLiteral("name"),
+                     QStringLiteral("What to render: ") +
+                         enumNames(core::allDebugViews(), core::debugViewName) +
+                         QStringLiteral(". error prints the UV error against the exact trace."),
+                     QStringLiteral("shading")});
+  options.push_back(
+      {QStringLiteral("format"),
+       QStringLiteral("png|exr"),
+       QStringLiteral("png (8-bit colours, legends on heat maps) or exr (float: raw values of "
+                      "data views such as uv, offset, steps, depth, error). Default: from --out."),
+       {}});
+  return options;
+}
 
 struct RenderRequest {
   core::Material material;
@@ -132,17 +197,8 @@ core::Result<core::Image> renderErrorView(renderer::OffscreenRenderer& offscreen
   return colors;
 }
 
-// Fills `request` from the command line; returns an exit code on failure.
-std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest& request) {
-  const QStringList positional = parser.positionalArguments();
-  if (positional.size() > 1) {
-    printError(QStringLiteral("render takes at most one preset (see --help)"));
-    return kExitUsage;
-  }
-  if (!parser.isSet(QStringLiteral("out"))) {
-    printError(QStringLiteral("render needs --out FILE (see --help)"));
-    return kExitUsage;
-  }
+// --out and --format: the file and whether it holds 8-bit colours or float values.
+std::optional<int> parseOutput(const QCommandLineParser& parser, RenderRequest& request) {
   request.outPath = parser.value(QStringLiteral("out"));
   const QString outSuffix = QFileInfo(request.outPath).suffix().toLower();
   const QString format =
@@ -154,27 +210,23 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     return kExitUsage;
   }
   request.exr = format == QStringLiteral("exr");
-  static const QStringList k8BitSuffixes = {QStringLiteral("png"),  QStringLiteral("jpg"),
-                                            QStringLiteral("jpeg"), QStringLiteral("tga"),
-                                            QStringLiteral("tif"),  QStringLiteral("tiff")};
+  const core::ImageFileType* type = core::imageFileTypeForPath(request.outPath.toStdString());
   if (request.exr && outSuffix != QStringLiteral("exr")) {
     printError(QStringLiteral("--out %1: --format exr writes an .exr file").arg(request.outPath));
     return kExitUsage;
   }
-  if (!request.exr && !k8BitSuffixes.contains(outSuffix)) {
+  if (!request.exr && (!type || type->isFloat)) {
     printError(QStringLiteral("--out %1: the image type must be one of png, jpg, tga, tif (or "
                               "exr with --format exr)")
                    .arg(request.outPath));
     return kExitUsage;
   }
-  const bool anyMap = parser.isSet(QStringLiteral("color")) ||
-                      parser.isSet(QStringLiteral("normal")) ||
-                      parser.isSet(QStringLiteral("height"));
-  if (positional.isEmpty() && !anyMap) {
-    printError(QStringLiteral("render needs a preset or maps (--color, --normal, --height)"));
-    return kExitUsage;
-  }
+  return std::nullopt;
+}
 
+// The preset (if given) and the map options, which replace the preset's maps.
+std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest& request) {
+  const QStringList positional = parser.positionalArguments();
   if (!positional.isEmpty()) {
     core::Result<core::LoadedPreset> loaded = core::loadPreset(positional.front().toStdString());
     if (!loaded) {
@@ -187,17 +239,16 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     request.material = std::move(loaded->preset.material);
     request.presetView = loaded->preset.view;
   }
-  // Maps given on the command line replace the preset's (a missing normal map is flat).
-  if (!loadMapOption(parser, QStringLiteral("color"), core::MapSlot::Color, request.material) ||
-      !loadMapOption(parser, QStringLiteral("normal"), core::MapSlot::Normal, request.material) ||
-      !loadMapOption(parser, QStringLiteral("height"), core::MapSlot::Height, request.material) ||
-      !loadMapOption(parser, QStringLiteral("ao"), core::MapSlot::AmbientOcclusion,
-                     request.material) ||
-      !loadMapOption(parser, QStringLiteral("roughness"), core::MapSlot::Roughness,
-                     request.material)) {
-    return kExitFailure;
+  // A missing normal map is flat.
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    if (!loadMapOption(parser, mapOptionName(slot), slot, request.material))
+      return kExitFailure;
   }
+  return std::nullopt;
+}
 
+// --set, --technique and --view.
+std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderRequest& request) {
   for (const QString& assignment : parser.values(QStringLiteral("set"))) {
     const qsizetype equals = assignment.indexOf(QLatin1Char('='));
     if (equals <= 0) {
@@ -219,7 +270,6 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     }
     request.material.setParameter(*id, value.value());
   }
-
   if (parser.isSet(QStringLiteral("technique"))) {
     const QString name = parser.value(QStringLiteral("technique"));
     const std::optional<core::Technique> technique = core::findTechnique(name.toStdString());
@@ -238,13 +288,16 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     return kExitUsage;
   }
   request.frame.debugView = *view;
+  return std::nullopt;
+}
 
+// --mesh, --size and the camera and light options (over the preset's view).
+std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& request) {
   const QString meshName = parser.isSet(QStringLiteral("mesh")) || request.presetView.mesh.empty()
                                ? parser.value(QStringLiteral("mesh"))
                                : QString::fromStdString(request.presetView.mesh);
   if (auto exit = resolveMesh(meshName, request.mesh))
     return *exit;
-
   static const QRegularExpression sizePattern(QStringLiteral("^(\\d{1,5})x(\\d{1,5})$"));
   const QRegularExpressionMatch size = sizePattern.match(parser.value(QStringLiteral("size")));
   if (!size.hasMatch() || size.captured(1).toInt() < 1 || size.captured(2).toInt() < 1) {
@@ -290,6 +343,33 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   return std::nullopt;
 }
 
+// Fills `request` from the command line; returns an exit code on failure.
+std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest& request) {
+  const QStringList positional = parser.positionalArguments();
+  if (positional.size() > 1) {
+    printError(QStringLiteral("render takes at most one preset (see --help)"));
+    return kExitUsage;
+  }
+  if (!parser.isSet(QStringLiteral("out"))) {
+    printError(QStringLiteral("render needs --out FILE (see --help)"));
+    return kExitUsage;
+  }
+  if (auto exit = parseOutput(parser, request))
+    return exit;
+  const bool anyMap = parser.isSet(QStringLiteral("color")) ||
+                      parser.isSet(QStringLiteral("normal")) ||
+                      parser.isSet(QStringLiteral("height"));
+  if (positional.isEmpty() && !anyMap) {
+    printError(QStringLiteral("render needs a preset or maps (--color, --normal, --height)"));
+    return kExitUsage;
+  }
+  if (auto exit = loadMaterial(parser, request))
+    return exit;
+  if (auto exit = applyOverrides(parser, request))
+    return exit;
+  return resolveView(parser, request);
+}
+
 }  // namespace
 
 int runRender(int argc, char* argv[]) {
@@ -302,52 +382,7 @@ int runRender(int argc, char* argv[]) {
   parser.addPositionalArgument(QStringLiteral("preset"),
                                QStringLiteral("A .relief preset (optional when maps are given)."),
                                QStringLiteral("[preset.relief]"));
-  const auto option = [&parser](const QString& name, const QString& description,
-                                const QString& valueName = {}, const QString& fallback = {}) {
-    parser.addOption(QCommandLineOption(name, description, valueName, fallback));
-  };
-  option(QStringLiteral("out"), QStringLiteral("Output image (png, jpg, tga, tif, or exr)."),
-         QStringLiteral("file"));
-  option(QStringLiteral("size"), QStringLiteral("Image size in pixels (default 1280x720)."),
-         QStringLiteral("WxH"), QStringLiteral("1280x720"));
-  option(QStringLiteral("yaw"), QStringLiteral("Camera yaw around +Y in degrees."),
-         QStringLiteral("deg"));
-  option(QStringLiteral("pitch"), QStringLiteral("Camera elevation in degrees (-89..89)."),
-         QStringLiteral("deg"));
-  option(QStringLiteral("distance"),
-         QStringLiteral("Camera distance from the target (default: frames the mesh)."),
-         QStringLiteral("D"));
-  option(QStringLiteral("light-yaw"), QStringLiteral("Light azimuth in degrees."),
-         QStringLiteral("deg"));
-  option(QStringLiteral("light-pitch"), QStringLiteral("Light elevation in degrees."),
-         QStringLiteral("deg"));
-  option(QStringLiteral("set"), QStringLiteral("Set a material parameter (repeatable)."),
-         QStringLiteral("name=value"));
-  option(QStringLiteral("color"), QStringLiteral("Colour map (sRGB)."), QStringLiteral("file"));
-  option(QStringLiteral("normal"), QStringLiteral("Normal map (flat when omitted)."),
-         QStringLiteral("file"));
-  option(QStringLiteral("height"), QStringLiteral("Height map."), QStringLiteral("file"));
-  option(QStringLiteral("ao"), QStringLiteral("Ambient occlusion map."), QStringLiteral("file"));
-  option(QStringLiteral("roughness"), QStringLiteral("Roughness map."), QStringLiteral("file"));
-  option(QStringLiteral("mesh"),
-         QStringLiteral("plane, cube, sphere, cylinder, torus, or a mesh file (OBJ, FBX, glTF, "
-                        "...; default plane)."),
-         QStringLiteral("name|file"), QStringLiteral("plane"));
-  option(QStringLiteral("technique"),
-         QStringLiteral("Overrides the preset's technique: ") +
-             enumNames(core::allTechniques(), core::techniqueName) + QLatin1Char('.'),
-         QStringLiteral("name"));
-  option(QStringLiteral("view"),
-         QStringLiteral("What to render: ") +
-             enumNames(core::allDebugViews(), core::debugViewName) +
-             QStringLiteral(" (default shading). error prints the UV error against the exact "
-                            "trace."),
-         QStringLiteral("name"), QStringLiteral("shading"));
-  option(
-      QStringLiteral("format"),
-      QStringLiteral("png (8-bit colours, legends on heat maps) or exr (float: raw values of "
-                     "data views such as uv, offset, steps, depth, error). Default: from --out."),
-      QStringLiteral("png|exr"));
+  addOptions(parser, renderOptions());
   if (auto exit = parseOrExit(parser, arguments,
                               QStringLiteral("relief-cli render [preset.relief] --out FILE "
                                              "[options]"))) {

@@ -4,6 +4,7 @@
 #include "core/base/AtomicFile.h"
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <iterator>
 
@@ -21,15 +22,24 @@ std::string lowerExtension(const std::string& path) {
   return extension;
 }
 
+constexpr std::array kContainers = {
+    TextureContainerInfo{TextureContainer::Dds, "dds", "DDS"},
+    TextureContainerInfo{TextureContainer::Ktx2, "ktx2", "KTX2"},
+};
+
 }  // namespace
 
 std::optional<TextureContainer> containerForPath(const std::string& path) {
   const std::string extension = lowerExtension(path);
-  if (extension == "dds")
-    return TextureContainer::Dds;
-  if (extension == "ktx2")
-    return TextureContainer::Ktx2;
+  for (const TextureContainerInfo& info : kContainers) {
+    if (info.extension == extension)
+      return info.container;
+  }
   return std::nullopt;
+}
+
+const TextureContainerInfo& textureContainerInfo(TextureContainer container) {
+  return kContainers[std::size_t(container)];
 }
 
 bool containerHolds(TextureContainer container, TextureFormat format) {
@@ -42,8 +52,8 @@ TextureContainer containerFor(TextureFormat format, bool preferDds) {
                                                                     : TextureContainer::Ktx2;
 }
 
-std::string_view containerExtension(TextureContainer container) {
-  return container == TextureContainer::Dds ? ".dds" : ".ktx2";
+std::string containerExtension(TextureContainer container) {
+  return "." + std::string(textureContainerInfo(container).extension);
 }
 
 Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path) {

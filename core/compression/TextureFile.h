@@ -26,6 +26,13 @@ inline constexpr int kMaxTextureDimension = 32768;
 
 enum class TextureContainer { Dds, Ktx2 };
 
+struct TextureContainerInfo {
+  TextureContainer container;
+  std::string_view extension;  // lower case, without the dot
+  std::string_view label;
+};
+const TextureContainerInfo& textureContainerInfo(TextureContainer container);
+
 // From the extension (.dds, .ktx2), case-insensitive.
 std::optional<TextureContainer> containerForPath(const std::string& path);
 
@@ -34,7 +41,7 @@ std::optional<TextureContainer> containerForPath(const std::string& path);
 bool containerHolds(TextureContainer container, TextureFormat format);
 // The container a format is written in when the user prefers DDS where it can hold it.
 TextureContainer containerFor(TextureFormat format, bool preferDds);
-std::string_view containerExtension(TextureContainer container);  // ".dds", ".ktx2"
+std::string containerExtension(TextureContainer container);  // ".dds", ".ktx2"
 
 // The file's bytes; `name` appears in error messages.
 Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture);

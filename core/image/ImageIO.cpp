@@ -2,6 +2,7 @@
 #include "core/image/ImageIO.h"
 
 #include "core/base/ThirdPartyAllocationScope.h"
+#include "core/image/ImageFileTypes.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -15,13 +16,6 @@ namespace relief::core::inline image {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // OpenImageIO's messages often repeat the path and end with newlines; keep them readable.
 std::string cleanOiioMessage(std::string message) {
@@ -109,9 +103,10 @@ Status readPixels(OIIO::ImageInput& input, const std::string& path, Read read, b
   return {};
 }
 
-OIIO::TypeDesc chooseFileType(const Image& image, const std::string& ext, SampleFormat format) {
-  const bool isExr = ext == ".exr";
-  const bool supports16 = ext == ".png" || ext == ".tif" || ext == ".tiff";
+OIIO::TypeDesc chooseFileType(const Image& image, const std::string& path, SampleFormat format) {
+  const ImageFileType* type = imageFileTypeForPath(path);
+  const bool isExr = type && type->isFloat;
+  const bool supports16 = type && type->maxBitsPerChannel == 16;
   switch (format) {
     case SampleFormat::UInt8:
       return OIIO::TypeDesc::UINT8;
@@ -153,10 +148,10 @@ Result<ImageFileInfo> readImageInfo(const std::string& path) {
 }
 
 SampleFormat fullPrecisionFormatFor(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  if (ext == ".exr")
+  const ImageFileType* type = imageFileTypeForPath(path);
+  if (type && type->isFloat)
     return SampleFormat::Float;
-  if (ext == ".png" || ext == ".tif" || ext == ".tiff")
+  if (type && type->maxBitsPerChannel == 16)
     return SampleFormat::UInt16;
   return SampleFormat::UInt8;
 }
@@ -208,17 +203,16 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
   if (image.isEmpty()) {
     return makeError(path + ": nothing to save (the image is empty)");
   }
-  const std::string ext = lowerExtension(path);
   auto output = OIIO::ImageOutput::create(path);
   if (!output) {
     return makeError(path + ": cannot write this file type (" + cleanOiioMessage(OIIO::geterror()) +
                      ")");
   }
   OIIO::ImageSpec spec(image.width(), image.height(), image.channels(),
-                       chooseFileType(image, ext, format));
+                       chooseFileType(image, path, format));
   // Tag linear data (normals, heights) as such, so readers do not treat it as sRGB colour.
   spec.attribute("oiio:ColorSpace", image.colorSpace() == ColorSpace::Srgb ? "sRGB" : "Linear");
-  if (ext == ".exr") {
+  if (const ImageFileType* type = imageFileTypeForPath(path); type && type->isFloat) {
     spec.attribute("compression", "zip");
   }
   // Quantising finer data to 8 bits bands smooth gradients; OpenImageIO's dither adds noise of

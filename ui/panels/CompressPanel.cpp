@@ -423,8 +423,15 @@ void CompressPanel::saveSelected() {
     return;
   const core::CompressionOutcome& outcome = m_outcomes.at(*slot);
   const core::TextureFormat format = outcome.job.settings.format;
-  const bool dds = core::containerHolds(core::TextureContainer::Dds, format);
-  const QString filter = dds ? tr("KTX2 (*.ktx2);;DDS (*.dds)") : tr("KTX2 (*.ktx2)");
+  QStringList filters;  // KTX2 first: it holds every format
+  for (core::TextureContainer container :
+       {core::TextureContainer::Ktx2, core::TextureContainer::Dds}) {
+    if (core::containerHolds(container, format)) {
+      const core::TextureContainerInfo& info = core::textureContainerInfo(container);
+      filters << QStringLiteral("%1 (*.%2)").arg(toQString(info.label), toQString(info.extension));
+    }
+  }
+  const QString filter = filters.join(QStringLiteral(";;"));
   QString path = QFileDialog::getSaveFileName(
       this, tr("Save Compressed %1 Map").arg(toQString(core::mapSlotLabel(*slot))),
       QString::fromStdString(std::string(core::mapSlotName(*slot)) + "_" +

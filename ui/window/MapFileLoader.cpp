@@ -1,6 +1,7 @@
 // MapFileLoader; see MapFileLoader.h.
 #include "ui/window/MapFileLoader.h"
 
+#include "core/image/ImageFileTypes.h"
 #include "core/image/ImageIO.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/window/AppSettings.h"
@@ -14,28 +15,17 @@
 #include <QStringList>
 
 namespace relief::ui::inline window {
-namespace {
-
-const QStringList& imageSuffixes() {
-  static const QStringList suffixes = {
-      QStringLiteral("png"), QStringLiteral("jpg"),  QStringLiteral("jpeg"), QStringLiteral("tga"),
-      QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("exr")};
-  return suffixes;
-}
-
-}  // namespace
-
 MapFileLoader::MapFileLoader(MaterialDocument* document, QWidget* dialogParent)
     : QObject(dialogParent), m_document(document), m_parent(dialogParent) {}
 
 bool MapFileLoader::isImageFile(const QString& path) {
-  return imageSuffixes().contains(QFileInfo(path).suffix().toLower());
+  return core::imageFileTypeForPath(path.toStdString()) != nullptr;
 }
 
 QString MapFileLoader::fileFilter() {
   QStringList patterns;
-  for (const QString& suffix : imageSuffixes())
-    patterns << QStringLiteral("*.") + suffix;
+  for (const core::ImageFileType& type : core::imageFileTypes())
+    patterns << QStringLiteral("*.") + toQString(type.extension);
   return tr("Images (%1);;All files (*)").arg(patterns.join(QLatin1Char(' ')));
 }
 
