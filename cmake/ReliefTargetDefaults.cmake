@@ -17,3 +17,23 @@ function(relief_target_defaults target)
   target_compile_definitions(${target} PRIVATE QT_NO_KEYWORDS
                                                GLM_FORCE_CXX17)
 endfunction()
+
+# relief_folder_sources(<variable> <folder> <Class>...): appends a folder's sources to <variable>,
+# one class per name (Class.cpp and Class.h, or only the one that exists: Result.h, BcCodec.cpp).
+# The layers' CMakeLists list their folders with it, so the grouping of the code is visible there.
+function(relief_folder_sources variable folder)
+  set(files ${${variable}})
+  foreach(class ${ARGN})
+    set(found FALSE)
+    foreach(extension cpp h)
+      if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${folder}/${class}.${extension})
+        list(APPEND files ${folder}/${class}.${extension})
+        set(found TRUE)
+      endif()
+    endforeach()
+    if(NOT found)
+      message(FATAL_ERROR "${folder}/${class}: neither ${class}.cpp nor ${class}.h exists")
+    endif()
+  endforeach()
+  set(${variable} ${files} PARENT_SCOPE)
+endfunction()

@@ -160,6 +160,15 @@ int likelySourceChannels(TextureFormat format) {
   return layout == FormatLayout::Rgba ? 4 : layout == FormatLayout::R ? 1 : 3;
 }
 
+CompressedTexture textureOfUnknownOrigin(TextureFormat format, bool srgb) {
+  CompressedTexture texture;
+  texture.format = format;
+  texture.srgb = srgb;
+  texture.slot = likelySlot(format);
+  texture.sourceChannels = likelySourceChannels(format);
+  return texture;
+}
+
 Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
                                       const CompressionSettings& settings,
                                       const WorkControl& control) {

@@ -60,5 +60,8 @@ double shareOutsideUnitRange(const Image& map);
 // the two-channel formats, a height for one channel, colour otherwise).
 MapSlot likelySlot(TextureFormat format);
 int likelySourceChannels(TextureFormat format);
+// An empty texture of `format` with the slot and channel count the layout suggests, for a
+// reader to add the file's levels to.
+CompressedTexture textureOfUnknownOrigin(TextureFormat format, bool srgb);
 
 }  // namespace relief::core::inline compression

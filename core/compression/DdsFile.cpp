@@ -148,19 +148,11 @@ Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
     if (!format)
       return fail("FourCC \"" + fourCCText(fourCC) + "\" is not one Relief reads");
   }
-  if (width == 0 || height == 0 || width > kMaxTextureDimension || height > kMaxTextureDimension)
-    return fail("its size " + std::to_string(width) + "x" + std::to_string(height) +
-                " is outside 1.." + std::to_string(kMaxTextureDimension));
+  if (std::string problem = textureExtentProblem(width, height, mipCount); !problem.empty())
+    return fail(problem);
   const int levels = int(std::max<std::uint32_t>(mipCount, 1));
-  if (levels > mipLevelCount(int(width), int(height)))
-    return fail(std::to_string(mipCount) + " mip levels is more than a " + std::to_string(width) +
-                "x" + std::to_string(height) + " texture has");
 
-  CompressedTexture texture;
-  texture.format = *format;
-  texture.srgb = srgb;
-  texture.slot = likelySlot(*format);
-  texture.sourceChannels = likelySourceChannels(*format);
+  CompressedTexture texture = textureOfUnknownOrigin(*format, srgb);
   std::uint64_t offset = in.position();
   int w = int(width), h = int(height);
   for (int level = 0; level < levels; ++level) {

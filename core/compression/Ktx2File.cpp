@@ -200,20 +200,12 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
                 " is not supported (only uncompressed levels are read)");
   if (depth > 1 || layers > 1 || faces != 1)
     return fail("only single 2D textures are read (not arrays, cube maps or volumes)");
-  if (width == 0 || height == 0 || width > kMaxTextureDimension || height > kMaxTextureDimension)
-    return fail("its size " + std::to_string(width) + "x" + std::to_string(height) +
-                " is outside 1.." + std::to_string(kMaxTextureDimension));
+  if (std::string problem = textureExtentProblem(width, height, levelCount); !problem.empty())
+    return fail(problem);
   // levelCount 0 means the base level only, with the rest to be generated (KTX2 3.7).
   const int levels = int(std::max<std::uint32_t>(levelCount, 1));
-  if (levelCount > std::uint32_t(mipLevelCount(int(width), int(height))))
-    return fail(std::to_string(levelCount) + " mip levels is more than a " + std::to_string(width) +
-                "x" + std::to_string(height) + " texture has");
 
-  CompressedTexture texture;
-  texture.format = *format;
-  texture.srgb = srgb;
-  texture.slot = likelySlot(*format);
-  texture.sourceChannels = likelySourceChannels(*format);
+  CompressedTexture texture = textureOfUnknownOrigin(*format, srgb);
 
   // Our own keys say what the map was; other writers' files fall back to the layout's guess.
   if (std::uint64_t(kvdOffset) + kvdLength <= bytes.size() && kvdLength > 0) {

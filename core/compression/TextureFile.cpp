@@ -2,6 +2,7 @@
 #include "core/compression/TextureFile.h"
 
 #include "core/base/AtomicFile.h"
+#include "core/compression/MipChain.h"
 
 #include <algorithm>
 #include <array>
@@ -40,6 +41,19 @@ std::optional<TextureContainer> containerForPath(const std::string& path) {
 
 const TextureContainerInfo& textureContainerInfo(TextureContainer container) {
   return kContainers[std::size_t(container)];
+}
+
+std::string textureExtentProblem(std::uint32_t width, std::uint32_t height, std::uint32_t levels) {
+  if (width == 0 || height == 0 || width > std::uint32_t(kMaxTextureDimension) ||
+      height > std::uint32_t(kMaxTextureDimension)) {
+    return "its size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1.." +
+           std::to_string(kMaxTextureDimension);
+  }
+  if (levels > std::uint32_t(mipLevelCount(int(width), int(height)))) {
+    return std::to_string(levels) + " mip levels is more than a " + std::to_string(width) + "x" +
+           std::to_string(height) + " texture has";
+  }
+  return {};
 }
 
 bool containerHolds(TextureContainer container, TextureFormat format) {

@@ -24,6 +24,10 @@ namespace relief::core::inline compression {
 // or 32768).
 inline constexpr int kMaxTextureDimension = 32768;
 
+// The header checks the DDS and KTX2 readers share: a size within 1..kMaxTextureDimension and no
+// more mip levels than the size has (`levels` as the file states it). Empty when they hold.
+std::string textureExtentProblem(std::uint32_t width, std::uint32_t height, std::uint32_t levels);
+
 enum class TextureContainer { Dds, Ktx2 };
 
 struct TextureContainerInfo {

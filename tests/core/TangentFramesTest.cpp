@@ -2,6 +2,7 @@
 // handedness that makes B = cross(N, T) * w point along +v, also where UVs are mirrored.
 #include "core/mesh/MeshPrimitives.h"
 #include "core/mesh/TangentFrames.h"
+#include "support/TestMeshes.h"
 
 #include <gtest/gtest.h>
 
@@ -70,28 +71,8 @@ TEST(TangentFrames, PrimitivesAreOrthonormalAndFollowTheirUvs) {
   }
 }
 
-// Two quads side by side sharing no vertices; the right one's u runs backwards (a mirrored
-// UV island, as on symmetric models).
-Mesh mirroredQuads() {
-  Mesh mesh;
-  mesh.name = "mirrored";
-  auto quad = [&mesh](float x0, float x1, float u0, float u1) {
-    const auto base = std::uint32_t(mesh.vertices.size());
-    const glm::vec3 up(0, 1, 0);
-    mesh.vertices.push_back({{x0, 0, 1}, up, {u0, 0}, {}});
-    mesh.vertices.push_back({{x1, 0, 1}, up, {u1, 0}, {}});
-    mesh.vertices.push_back({{x1, 0, -1}, up, {u1, 1}, {}});
-    mesh.vertices.push_back({{x0, 0, -1}, up, {u0, 1}, {}});
-    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-  };
-  quad(-1.0f, 0.0f, 0.0f, 1.0f);
-  quad(0.0f, 1.0f, 1.0f, 0.0f);  // mirrored in u
-  computeTangentFrames(mesh);
-  return mesh;
-}
-
 TEST(TangentFrames, MirroredUvsFlipTheHandedness) {
-  const Mesh mesh = mirroredQuads();
+  const Mesh mesh = test::mirroredQuads();
   expectOrthonormal(mesh);
   expectFramesFollowUvs(mesh);
   for (std::size_t i = 0; i < 4; ++i) {

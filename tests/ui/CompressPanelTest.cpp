@@ -3,6 +3,7 @@
 // on this driver, as the status bar says) in a wipe against the original, Cancel leaves the
 // material and the earlier results as they were, the 2D compare view is texel-exact when
 // zoomed, and "compare all formats" fills its table and chart and hands a format back.
+#include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/compare/CompareAllDialog.h"
 #include "ui/compare/CompareDialog.h"
@@ -44,17 +45,10 @@ double meanDifference(const QImage& a, const QImage& b) {
   return sum / (double(x.width()) * x.height() * 4.0 * 255.0);
 }
 
-class CompressPanelTest : public ::testing::Test {
+class CompressPanelTest : public MainWindowFixture {
  protected:
-  void SetUp() override {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->resize(1200, 760);
-    m_window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("bricks"))));
-  }
+  void SetUp() override { openWindow(1200, 760, samplePreset("bricks")); }
   ui::CompressPanel* panel() { return m_window->compressPanel(); }
-  ui::MaterialDocument* document() { return m_window->document(); }
 
   void choose(MapSlot slot, std::optional<TextureFormat> format,
               core::CompressionQuality quality = core::CompressionQuality::Fast) {
@@ -63,8 +57,6 @@ class CompressPanelTest : public ::testing::Test {
     ASSERT_GE(box->currentIndex(), 0);
     panel()->qualityBox(slot)->setCurrentIndex(panel()->qualityBox(slot)->findData(int(quality)));
   }
-
-  std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks) {

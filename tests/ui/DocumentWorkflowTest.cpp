@@ -4,6 +4,7 @@
 // shortcut list. Modal dialogs are answered by a timer, as a user would click them.
 #include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
+#include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/dialogs/ExportDialog.h"
 #include "ui/dialogs/ShortcutsDialog.h"
@@ -88,18 +89,12 @@ std::string readBytes(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-class DocumentWorkflow : public ::testing::Test {
+class DocumentWorkflow : public MainWindowFixture {
  protected:
   void SetUp() override {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->resize(1100, 750);
-    m_window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
     m_path = copySample("bricks", "workflow");
-    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(m_path)));
+    openWindow(1100, 750, m_path);
   }
-
-  ui::MaterialDocument* document() const { return m_window->document(); }
 
   // Types a value into a parameter's spin box, as a user does.
   void typeParameter(core::ParamId id, double value) {
@@ -108,7 +103,6 @@ class DocumentWorkflow : public ::testing::Test {
     slider->spinBox()->setValue(value);
   }
 
-  std::unique_ptr<ui::MainWindow> m_window;
   std::string m_path;
 };
 

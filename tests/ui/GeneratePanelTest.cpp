@@ -4,6 +4,7 @@
 #include "core/image/ColorSpace.h"
 #include "renderer/ImageConversion.h"
 #include "support/ImageCompare.h"
+#include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/panels/GeneratePanel.h"
@@ -25,28 +26,15 @@
 namespace relief::test {
 namespace {
 
-core::Image grabbed(ui::ViewportWidget* viewport) {
-  return renderer::fromQImage(viewport->grabFramebuffer());
-}
-
-class GeneratePanelTest : public ::testing::Test {
+class GeneratePanelTest : public MainWindowFixture {
  protected:
-  void SetUp() override {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->resize(1100, 700);
-    m_window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("bricks"))));
-  }
+  void SetUp() override { openWindow(1100, 700, samplePreset("bricks")); }
   ui::GeneratePanel* panel() { return m_window->generatePanel(); }
-  ui::MaterialDocument* document() { return m_window->document(); }
 
   bool waitForResult() {
     QSignalSpy ready(panel(), &ui::GeneratePanel::resultAvailable);
     return panel()->result().has_value() || ready.wait(60000);
   }
-
-  std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(GeneratePanelTest, ApplyingANormalMapIsOneUndoStepTheViewportShows) {
@@ -59,15 +47,15 @@ TEST_F(GeneratePanelTest, ApplyingANormalMapIsOneUndoStepTheViewportShows) {
   EXPECT_EQ(panel()->result()->image.width(), 1024);
 
   const auto before = document()->material().map(core::MapSlot::Normal).image;
-  const core::Image frameBefore = grabbed(m_window->viewport());
+  const core::Image frameBefore = grabbed();
   QTest::mouseClick(panel()->applyButton(), Qt::LeftButton);
   EXPECT_EQ(document()->undoStack()->count(), 1);
   EXPECT_NE(document()->material().map(core::MapSlot::Normal).image, before);
-  EXPECT_GT(compareImages(frameBefore, grabbed(m_window->viewport())).maxError, 4.0 / 255.0);
+  EXPECT_GT(compareImages(frameBefore, grabbed()).maxError, 4.0 / 255.0);
 
   document()->undoStack()->undo();
   EXPECT_EQ(document()->material().map(core::MapSlot::Normal).image, before);
-  EXPECT_EQ(compareImages(frameBefore, grabbed(m_window->viewport())).maxError, 0.0);
+  EXPECT_EQ(compareImages(frameBefore, grabbed()).maxError, 0.0);
 }
 
 TEST_F(GeneratePanelTest, HeightFromNormalAlsoSetsTheHeightScaleInTheSameStep) {

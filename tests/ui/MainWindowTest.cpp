@@ -6,6 +6,7 @@
 #include "renderer/ImageConversion.h"
 #include "renderer/OffscreenRenderer.h"
 #include "support/ImageCompare.h"
+#include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/panels/ParameterPanel.h"
@@ -25,10 +26,6 @@
 namespace relief::test {
 namespace {
 
-core::Image toImage(const QImage& grabbed) {
-  return renderer::fromQImage(grabbed);
-}
-
 // The frame changed visibly: on average over the whole frame (background included, which no
 // parameter touches) and strongly somewhere.
 void expectVisibleChange(const core::Image& before, const core::Image& after) {
@@ -37,23 +34,13 @@ void expectVisibleChange(const core::Image& before, const core::Image& after) {
   EXPECT_GT(change.maxError, 16.0 / 255.0);
 }
 
-class MainWindowTest : public ::testing::Test {
+class MainWindowTest : public MainWindowFixture {
  protected:
-  void SetUp() override {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->resize(1000, 700);
-    m_window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("bricks"))));
-  }
-
-  core::Image grab() { return toImage(m_window->viewport()->grabFramebuffer()); }
-
-  std::unique_ptr<ui::MainWindow> m_window;
+  void SetUp() override { openWindow(1000, 700, samplePreset("bricks")); }
 };
 
 TEST_F(MainWindowTest, ShowsALitNormalMappedSample) {
-  const core::Image frame = grab();
+  const core::Image frame = grabbed();
   ASSERT_GT(frame.width(), 100);
   // Not empty: the centre (the material) is brighter than a background corner and coloured
   // like brick (more red than blue).
@@ -66,7 +53,7 @@ TEST_F(MainWindowTest, ShowsALitNormalMappedSample) {
 }
 
 TEST_F(MainWindowTest, MovingASliderChangesTheFrameAndUndoRestoresIt) {
-  const core::Image before = grab();
+  const core::Image before = grabbed();
   auto* tiling =
       qobject_cast<ui::ParameterSlider*>(m_window->parameterPanel()->editor(core::ParamId::Tiling));
   ASSERT_NE(tiling, nullptr);
@@ -92,7 +79,7 @@ TEST_F(MainWindowTest, MovingASliderChangesTheFrameAndUndoRestoresIt) {
   const double dragged = m_window->document()->material().parameter(core::ParamId::Tiling);
   EXPECT_GT(dragged, 2.5);
 
-  expectVisibleChange(before, grab());
+  expectVisibleChange(before, grabbed());
 
   // The whole drag is one undo step.
   QUndoStack* undo = m_window->document()->undoStack();
@@ -100,24 +87,24 @@ TEST_F(MainWindowTest, MovingASliderChangesTheFrameAndUndoRestoresIt) {
   undo->undo();
   EXPECT_EQ(m_window->document()->material().parameter(core::ParamId::Tiling), 2.0);
   EXPECT_EQ(tiling->value(), 2.0);
-  EXPECT_EQ(compareImages(before, grab()).maxError, 0.0);
+  EXPECT_EQ(compareImages(before, grabbed()).maxError, 0.0);
   undo->redo();
   EXPECT_EQ(m_window->document()->material().parameter(core::ParamId::Tiling), dragged);
 }
 
 TEST_F(MainWindowTest, CheckBoxParameterChangesTheFrame) {
-  const core::Image before = grab();
+  const core::Image before = grabbed();
   auto* yDown =
       qobject_cast<QCheckBox*>(m_window->parameterPanel()->editor(core::ParamId::NormalYDown));
   ASSERT_NE(yDown, nullptr);
   QTest::mouseClick(yDown, Qt::LeftButton);
   EXPECT_EQ(m_window->document()->material().parameter(core::ParamId::NormalYDown), 1.0);
-  expectVisibleChange(before, grab());
+  expectVisibleChange(before, grabbed());
 }
 
 TEST_F(MainWindowTest, ViewportMatchesTheOffscreenRenderOfTheSameView) {
   // relief-cli render uses the offscreen renderer: the viewport must show the same pixels.
-  const core::Image viewportFrame = grab();
+  const core::Image viewportFrame = grabbed();
   auto offscreen = renderer::OffscreenRenderer::create();
   ASSERT_TRUE(offscreen.ok()) << offscreen.error();
   offscreen.value()->setMesh(m_window->viewport()->mesh());

@@ -4,6 +4,7 @@
 #include "core/image/ColorSpace.h"
 #include "renderer/ImageConversion.h"
 #include "support/ImageCompare.h"
+#include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/panels/LightPanel.h"
@@ -27,23 +28,13 @@ namespace {
 
 using core::ParamId;
 
-core::Image grabbed(ui::ViewportWidget* viewport) {
-  return renderer::fromQImage(viewport->grabFramebuffer());
-}
-
-class ViewportControls : public ::testing::Test {
+class ViewportControls : public MainWindowFixture {
  protected:
   void SetUp() override {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->resize(1100, 700);
-    m_window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-    ASSERT_TRUE(m_window->openPreset(QString::fromStdString(samplePreset("cobblestones"))));
+    openWindow(1100, 700, samplePreset("cobblestones"));
     viewport()->setDebugView(core::DebugView::Shading);
   }
 
-  ui::ViewportWidget* viewport() { return m_window->viewport(); }
-  ui::MaterialDocument* document() { return m_window->document(); }
   QWidget* editor(ParamId id) { return m_window->parameterPanel()->editor(id); }
 
   // Moves one parameter's control to another value, as a user would.
@@ -69,8 +60,6 @@ class ViewportControls : public ::testing::Test {
       Q_EMIT combo->activated(next);
     }
   }
-
-  std::unique_ptr<ui::MainWindow> m_window;
 };
 
 // The frame changed visibly somewhere. Rendering is deterministic (undo gives back the same
@@ -97,21 +86,21 @@ TEST_F(ViewportControls, EveryParameterChangesTheFrame) {
     // Write-displaced-depth changes only depth: watch it in the depth view.
     viewport()->setDebugView(spec.id == ParamId::DepthOffset ? core::DebugView::Depth
                                                              : core::DebugView::Shading);
-    const core::Image before = grabbed(viewport());
+    const core::Image before = grabbed();
     changeThroughItsControl(spec.id);
-    EXPECT_TRUE(frameChanged(before, grabbed(viewport())));
+    EXPECT_TRUE(frameChanged(before, grabbed()));
     document()->undoStack()->undo();
-    EXPECT_EQ(compareImages(before, grabbed(viewport())).maxError, 0.0) << "undo restores";
+    EXPECT_EQ(compareImages(before, grabbed()).maxError, 0.0) << "undo restores";
   }
 }
 
 TEST_F(ViewportControls, EveryTechniqueAndDebugViewChangesTheFrame) {
   QComboBox* techniques = m_window->parameterPanel()->techniqueBox();
-  core::Image previous = grabbed(viewport());
+  core::Image previous = grabbed();
   for (int i = 1; i < techniques->count(); ++i) {
     techniques->setCurrentIndex(i);
     Q_EMIT techniques->activated(i);
-    const core::Image frame = grabbed(viewport());
+    const core::Image frame = grabbed();
     EXPECT_TRUE(frameChanged(previous, frame)) << techniques->itemText(i).toStdString();
     previous = frame;
   }
@@ -121,7 +110,7 @@ TEST_F(ViewportControls, EveryTechniqueAndDebugViewChangesTheFrame) {
       continue;  // asynchronous
     views->setCurrentIndex(i);
     Q_EMIT views->activated(i);
-    const core::Image frame = grabbed(viewport());
+    const core::Image frame = grabbed();
     EXPECT_TRUE(frameChanged(previous, frame)) << views->itemText(i).toStdString();
     previous = frame;
   }
@@ -129,21 +118,21 @@ TEST_F(ViewportControls, EveryTechniqueAndDebugViewChangesTheFrame) {
 
 TEST_F(ViewportControls, LightControlsMoveTheLight) {
   ui::LightPanel* light = m_window->lightPanel();
-  core::Image before = grabbed(viewport());
+  core::Image before = grabbed();
   light->azimuthSlider()->setValue((light->azimuthSlider()->value() + 120) % 360);
-  core::Image after = grabbed(viewport());
+  core::Image after = grabbed();
   EXPECT_TRUE(frameChanged(before, after));
   light->elevationSlider()->setValue(light->elevationSlider()->value() + 30);
   before = after;
-  after = grabbed(viewport());
+  after = grabbed();
   EXPECT_TRUE(frameChanged(before, after));
   light->intensityBox()->setValue(0.5);
   before = after;
-  after = grabbed(viewport());
+  after = grabbed();
   EXPECT_TRUE(frameChanged(before, after));
   light->ambientBox()->setValue(0.5);
   before = after;
-  after = grabbed(viewport());
+  after = grabbed();
   EXPECT_TRUE(frameChanged(before, after));
   // Ctrl+drag in the viewport moves the same light, and the panel follows.
   const int azimuth = light->azimuthSlider()->value();
@@ -156,11 +145,11 @@ TEST_F(ViewportControls, LightControlsMoveTheLight) {
 
 TEST_F(ViewportControls, MeshesAndTheSplitComparisonChangeTheFrame) {
   QComboBox* meshes = m_window->meshBox();
-  core::Image previous = grabbed(viewport());
+  core::Image previous = grabbed();
   for (int i = 1; i < meshes->count(); ++i) {
     meshes->setCurrentIndex(i);
     Q_EMIT meshes->activated(i);
-    const core::Image frame = grabbed(viewport());
+    const core::Image frame = grabbed();
     EXPECT_TRUE(frameChanged(previous, frame)) << meshes->itemText(i).toStdString();
     previous = frame;
   }
@@ -168,16 +157,16 @@ TEST_F(ViewportControls, MeshesAndTheSplitComparisonChangeTheFrame) {
   m_window->compareAction()->setChecked(true);
   ASSERT_TRUE(viewport()->isComparing());
   document()->setTechnique(core::Technique::Normal);
-  const core::Image split = grabbed(viewport());
+  const core::Image split = grabbed();
   ASSERT_NE(viewport()->comparisonMaterial(), nullptr);
   EXPECT_EQ(viewport()->comparisonMaterial()->technique(), core::Technique::Pom);
   // Moving the divider moves where B starts.
   viewport()->setDividerFraction(0.2f);
-  EXPECT_TRUE(frameChanged(split, grabbed(viewport())));
+  EXPECT_TRUE(frameChanged(split, grabbed()));
 }
 
 TEST_F(ViewportControls, NothingRedrawsWhenNothingChanged) {
-  grabbed(viewport());
+  grabbed();
   QTest::qWait(100);
   QSignalSpy frames(viewport(), &ui::ViewportWidget::frameRendered);
   QTest::qWait(400);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/compression/CompressionReport.h"
+#include "ui/Forward.h"
 
 #include <QDialog>
 
@@ -15,8 +16,6 @@ class QSlider;
 class QSpinBox;
 
 namespace relief::ui::inline compare {
-
-class CompareView;
 
 class CompareDialog : public QDialog {
   Q_OBJECT

@@ -7,6 +7,7 @@
 #include "core/exporters/Exporter.h"
 #include "core/material/MaterialPreset.h"
 #include "core/mesh/Mesh.h"
+#include "ui/Forward.h"
 
 #include <QDialog>
 
@@ -15,10 +16,6 @@ class QLabel;
 class QLineEdit;
 class QProgressBar;
 class QPushButton;
-
-namespace relief::ui::inline tasks {
-class BackgroundTask;
-}
 
 namespace relief::ui::inline dialogs {
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/material/MaterialPreset.h"
+#include "ui/Forward.h"
 
 #include <QObject>
 #include <QString>
@@ -15,14 +16,7 @@
 class QMenu;
 class QWidget;
 
-namespace relief::ui::inline viewport {
-class ViewportWidget;
-}
-
 namespace relief::ui::inline document {
-
-class MaterialDocument;
-class RecoveryStore;
 
 class DocumentFiles : public QObject {
   Q_OBJECT

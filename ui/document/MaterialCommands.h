@@ -4,12 +4,11 @@
 
 #include "core/material/Material.h"
 #include "core/material/MaterialPreset.h"
+#include "ui/Forward.h"
 
 #include <QUndoCommand>
 
 namespace relief::ui::inline document {
-
-class MaterialDocument;
 
 class SetParameterCommand : public QUndoCommand {
  public:

@@ -5,6 +5,8 @@
 // copies of its maps, so the library does not depend on where they were).
 #pragma once
 
+#include "ui/Forward.h"
+
 #include <QIcon>
 #include <QStringList>
 #include <QWidget>
@@ -25,13 +27,7 @@ struct LoadedPreset;
 struct Preset;
 }  // namespace relief::core::inline material
 
-namespace relief::ui::inline tasks {
-class BackgroundTask;
-}
-
 namespace relief::ui::inline document {
-
-class MaterialDocument;
 
 class PresetLibrary : public QWidget {
   Q_OBJECT

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/material/MaterialPreset.h"
+#include "ui/Forward.h"
 
 #include <QDateTime>
 #include <QLockFile>
@@ -13,10 +14,6 @@
 #include <memory>
 #include <optional>
 #include <vector>
-
-namespace relief::ui::inline tasks {
-class BackgroundTask;
-}
 
 namespace relief::ui::inline document {
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/material/MapSlot.h"
+#include "ui/Forward.h"
 #include "ui/tasks/CompressionRunner.h"
 
 #include <QWidget>
@@ -22,17 +23,6 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
-
-namespace relief::ui::inline compare {
-class CompareAllDialog;
-class CompareDialog;
-}  // namespace relief::ui::inline compare
-namespace relief::ui::inline document {
-class MaterialDocument;
-}
-namespace relief::ui::inline viewport {
-class ViewportWidget;
-}
 
 namespace relief::ui::inline panels {
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/generators/Generators.h"
+#include "ui/Forward.h"
 
 #include <QWidget>
 
@@ -18,16 +19,6 @@ class QFormLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
-
-namespace relief::ui::inline compare {
-class ImagePairView;
-}
-namespace relief::ui::inline document {
-class MaterialDocument;
-}
-namespace relief::ui::inline tasks {
-class GeneratorRunner;
-}
 
 namespace relief::ui::inline panels {
 

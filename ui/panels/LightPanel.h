@@ -2,15 +2,13 @@
 // Kept in step with the viewport, where Ctrl+drag moves the same light.
 #pragma once
 
+#include "ui/Forward.h"
+
 #include <QWidget>
 
 class QDoubleSpinBox;
 class QPushButton;
 class QSlider;
-
-namespace relief::ui::inline viewport {
-class ViewportWidget;
-}
 
 namespace relief::ui::inline panels {
 

@@ -4,16 +4,13 @@
 #pragma once
 
 #include "core/material/MapSlot.h"
+#include "ui/Forward.h"
 
 #include <QWidget>
 
 #include <array>
 
 class QLabel;
-
-namespace relief::ui::inline document {
-class MaterialDocument;
-}
 
 namespace relief::ui::inline panels {
 

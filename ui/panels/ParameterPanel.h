@@ -4,16 +4,13 @@
 #pragma once
 
 #include "core/material/Parameters.h"
+#include "ui/Forward.h"
 
 #include <QWidget>
 
 #include <array>
 
 class QComboBox;
-
-namespace relief::ui::inline document {
-class MaterialDocument;
-}
 
 namespace relief::ui::inline panels {
 

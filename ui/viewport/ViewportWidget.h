@@ -10,6 +10,7 @@
 #include "core/view/DebugView.h"
 #include "core/view/ViewState.h"
 #include "renderer/FrameSettings.h"
+#include "ui/Forward.h"
 
 #include <QImage>
 #include <QOpenGLWidget>
@@ -23,14 +24,6 @@
 
 namespace relief::renderer {
 class MaterialRenderer;
-}
-
-namespace relief::ui::inline document {
-class MaterialDocument;
-}
-
-namespace relief::ui::inline tasks {
-class BackgroundTask;
 }
 
 namespace relief::ui::inline viewport {

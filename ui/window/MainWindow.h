@@ -6,6 +6,7 @@
 
 #include "core/material/MapSlot.h"
 #include "core/material/MaterialPreset.h"
+#include "ui/Forward.h"
 
 #include <QMainWindow>
 #include <QStringList>
@@ -17,27 +18,7 @@ class QComboBox;
 class QLabel;
 class QProgressBar;
 
-namespace relief::ui::inline document {
-class DocumentFiles;
-class MaterialDocument;
-class PresetLibrary;
-}  // namespace relief::ui::inline document
-namespace relief::ui::inline panels {
-class CompressPanel;
-class GeneratePanel;
-class LightPanel;
-class MapsPanel;
-class ParameterPanel;
-}  // namespace relief::ui::inline panels
-namespace relief::ui::inline viewport {
-class ViewportWidget;
-}
-
 namespace relief::ui::inline window {
-
-class MapFileLoader;
-class ViewToolBar;
-class ViewportImageExport;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT

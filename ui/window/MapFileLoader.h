@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/material/MapSlot.h"
+#include "ui/Forward.h"
 
 #include <QObject>
 #include <QString>
@@ -12,10 +13,6 @@
 #include <optional>
 
 class QWidget;
-
-namespace relief::ui::inline document {
-class MaterialDocument;
-}
 
 namespace relief::ui::inline window {
 

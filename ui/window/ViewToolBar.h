@@ -3,15 +3,13 @@
 // directly and follows it: the mesh box shows the viewport's mesh whoever changed it.
 #pragma once
 
+#include "ui/Forward.h"
+
 #include <QString>
 #include <QToolBar>
 
 class QAction;
 class QComboBox;
-
-namespace relief::ui::inline viewport {
-class ViewportWidget;
-}
 
 namespace relief::ui::inline window {
 

@@ -4,14 +4,12 @@
 // that names the file.
 #pragma once
 
+#include "ui/Forward.h"
+
 #include <QObject>
 #include <QString>
 
 class QWidget;
-
-namespace relief::ui::inline viewport {
-class ViewportWidget;
-}
 
 namespace relief::ui::inline window {
 
