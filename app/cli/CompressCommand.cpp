@@ -3,6 +3,7 @@
 
 #include "CliCommon.h"
 #include "core/compression/CompressionJob.h"
+#include "core/compression/MapFile.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
 
@@ -142,7 +143,7 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
     return kExitUsage;
   }
   const std::string inPath = parser.value(QStringLiteral("in")).toStdString();
-  core::Result<core::Image> map = core::loadImage(inPath);
+  core::Result<core::Image> map = core::loadMapFile(inPath);
   if (!map) {
     printError(QString::fromStdString(map.error()));
     return kExitFailure;
@@ -157,7 +158,7 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
   if (core::Result<std::vector<std::string>> check =
           core::checkCompression(*job.map, job.slot, *format);
       !check) {
-    printError(QString::fromStdString(check.error()) +
+    printError(QString::fromStdString(inPath + ": " + check.error()) +
                QStringLiteral("; pass --normal or --height if the map is one, or choose another "
                               "format"));
     return kExitUsage;
@@ -292,7 +293,7 @@ int runCompare(const QStringList& arguments) {
     return kExitUsage;
   const std::string referencePath = parser.positionalArguments()[0].toStdString();
   const std::string candidatePath = parser.positionalArguments()[1].toStdString();
-  core::Result<core::Image> reference = core::loadImage(referencePath);
+  core::Result<core::Image> reference = core::loadMapFile(referencePath);
   if (!reference) {
     printError(QString::fromStdString(reference.error()));
     return kExitFailure;

@@ -2,6 +2,7 @@
 #include "GenerateCommand.h"
 
 #include "CliCommon.h"
+#include "core/compression/MapFile.h"
 #include "core/generators/Generators.h"
 #include "core/image/ImageIO.h"
 
@@ -83,7 +84,7 @@ std::optional<int> loadInputs(const QCommandLineParser& parser, const core::Gene
       return kExitUsage;
     }
     const QString path = parser.value(qstr(input.name));
-    core::Result<core::Image> image = core::loadImage(path.toStdString());
+    core::Result<core::Image> image = core::loadMapFile(path.toStdString());
     if (!image) {
       printError(QString::fromStdString(image.error()));
       return kExitFailure;

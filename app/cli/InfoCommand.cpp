@@ -2,9 +2,32 @@
 #include "InfoCommand.h"
 
 #include "CliCommon.h"
+#include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
 
 namespace relief::cli {
+
+namespace {
+
+// A DDS or KTX2 file, read (and checked) by Relief's own texture reader.
+int printTextureInfo(const QString& path) {
+  core::Result<core::CompressedTexture> texture = core::loadCompressedTexture(path.toStdString());
+  if (!texture) {
+    printError(QString::fromStdString(texture.error()));
+    return kExitFailure;
+  }
+  const core::TextureFormatInfo& format = core::textureFormatInfo(texture->format);
+  printOut(QStringLiteral("file: %1\nformat: %2%3\nsize: %4x%5\nmip levels: %6\nbytes: %7\n")
+               .arg(path, QString::fromUtf8(format.label.data(), qsizetype(format.label.size())),
+                    texture->srgb ? QStringLiteral(" (sRGB)") : QString())
+               .arg(texture->levels.front().width)
+               .arg(texture->levels.front().height)
+               .arg(texture->levels.size())
+               .arg(texture->byteSize()));
+  return kExitOk;
+}
+
+}  // namespace
 
 int runInfo(const QStringList& arguments) {
   QCommandLineParser parser;
@@ -20,6 +43,8 @@ int runInfo(const QStringList& arguments) {
     return kExitUsage;
   }
   const QString path = parser.positionalArguments().front();
+  if (core::containerForPath(path.toStdString()))
+    return printTextureInfo(path);
   core::Result<core::ImageFileInfo> info = core::readImageInfo(path.toStdString());
   if (!info) {
     printError(QString::fromStdString(info.error()));

@@ -3,6 +3,7 @@
 
 #include "../DisplayCheck.h"
 #include "CliCommon.h"
+#include "core/compression/MapFile.h"
 #include "core/image/ImageFileTypes.h"
 #include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
@@ -118,7 +119,7 @@ bool loadMapOption(const QCommandLineParser& parser, const QString& option, core
   if (!parser.isSet(option))
     return true;
   const QString path = parser.value(option);
-  core::Result<core::Image> image = core::loadImage(path.toStdString());
+  core::Result<core::Image> image = core::loadMapFile(path.toStdString());
   if (!image) {
     printError(QString::fromStdString(image.error()));
     return false;

@@ -109,11 +109,14 @@ Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
   const std::uint32_t headerSize = in.u32();
   in.skip(4);  // flags: readers in practice ignore them, so do we
   const std::uint32_t height = in.u32(), width = in.u32();
-  in.skip(8);  // pitch or linear size, depth
+  in.skip(4);  // pitch or linear size
+  const std::uint32_t depth = in.u32();
   const std::uint32_t mipCount = in.u32();
   in.skip(11 * 4);
   const std::uint32_t pixelFormatSize = in.u32(), pixelFormatFlags = in.u32(), fourCC = in.u32();
-  in.skip(5 * 4 + 5 * 4);  // masks, caps, reserved
+  in.skip(5 * 4 + 4);  // bit count and masks, caps
+  const std::uint32_t caps2 = in.u32();
+  in.skip(3 * 4);  // caps3, caps4, reserved
   if (!in.ok())
     return fail("the file is shorter than a DDS header (" + std::to_string(bytes.size()) +
                 " bytes)");
@@ -122,13 +125,20 @@ Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
                 std::to_string(pixelFormatSize) + ")");
   if (!(pixelFormatFlags & kFourCCFlag))
     return fail("holds uncompressed texels; only block-compressed DDS files are read");
+  // A cube map or a volume read as 2D would show one face or slice as if it were the map.
+  constexpr std::uint32_t kCubeMap = 0x200, kVolume = 0x200000;
+  if (caps2 & kCubeMap)
+    return fail("is a cube map; only single 2D textures are read");
+  if ((caps2 & kVolume) || depth > 1)
+    return fail("is a volume texture (depth " + std::to_string(depth) +
+                "); only single 2D textures are read");
 
   std::optional<TextureFormat> format;
   bool srgb = false;
   if (fourCC == makeFourCC('D', 'X', '1', '0')) {
     const std::uint32_t dxgi = in.u32();
     const std::uint32_t dimension = in.u32();
-    in.skip(4);
+    const std::uint32_t miscFlag = in.u32();
     const std::uint32_t arraySize = in.u32();
     in.skip(4);
     if (!in.ok())
@@ -141,7 +151,8 @@ Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
     }
     if (!format)
       return fail("DXGI format " + std::to_string(dxgi) + " is not one Relief reads (BC1-BC5)");
-    if (dimension != 3 || arraySize > 1)
+    constexpr std::uint32_t kTextureCube = 0x4;
+    if (dimension != 3 || arraySize > 1 || (miscFlag & kTextureCube))
       return fail("only single 2D textures are read (not arrays, cube maps or volumes)");
   } else {
     format = formatForFourCC(fourCC, pixelFormatFlags & kNormalFlag);

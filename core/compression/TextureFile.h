@@ -13,6 +13,7 @@
 
 #include "core/base/Result.h"
 #include "core/compression/Compressor.h"
+#include "core/image/Image.h"
 
 #include <cstdint>
 #include <string>
@@ -20,9 +21,10 @@
 
 namespace relief::core::inline compression {
 
-// The largest width or height a reader accepts (GL_MAX_TEXTURE_SIZE on current GPUs is 16384
-// or 32768).
-inline constexpr int kMaxTextureDimension = 32768;
+// The largest width or height a reader accepts: the same limit as for images, because every
+// texture is decoded into an Image at some point (a larger one was accepted here and then
+// aborted on allocation when decoded).
+inline constexpr int kMaxTextureDimension = kMaxImageDimension;
 
 // The header checks the DDS and KTX2 readers share: a size within 1..kMaxTextureDimension and no
 // more mip levels than the size has (`levels` as the file states it). Empty when they hold.

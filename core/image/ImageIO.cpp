@@ -8,7 +8,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 #include <vector>
 
@@ -70,9 +73,26 @@ Status validateSpec(const std::string& path, const OIIO::ImageSpec& spec) {
   return {};
 }
 
+// DDS and KTX2 are Relief's own readers' business (core/compression/MapFile.h): OpenImageIO's
+// DDS reader spins forever on uncompressed DDS and accepts truncated files. Recognised by
+// their first bytes, so a renamed file is caught too.
+bool isTextureContainer(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  char magic[12] = {};
+  file.read(magic, sizeof magic);
+  static const char kKtx2[12] = {'\xAB', 'K',    'T',  'X',  ' ',    '2',
+                                 '0',    '\xBB', '\r', '\n', '\x1A', '\n'};
+  return std::memcmp(magic, "DDS ", 4) == 0 || std::memcmp(magic, kKtx2, sizeof kKtx2) == 0;
+}
+
 Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
   if (Status readable = checkReadableFile(path); !readable) {
     return makeError(readable.error());
+  }
+  if (isTextureContainer(path)) {
+    return makeError(path +
+                     ": a compressed texture (DDS or KTX2), not an image file; it is read "
+                     "by Relief's texture reader (relief-cli decode, or as a map)");
   }
   auto input = OIIO::ImageInput::open(path);
   if (!input) {
@@ -162,12 +182,24 @@ Status verifyImageData(const std::string& path) {
     return makeError(opened.error());
   OIIO::ImageInput& input = *opened.value();
   const OIIO::ImageSpec& spec = input.spec();
-  constexpr int kStripRows = 64;
-  std::vector<float> strip(std::size_t(spec.width) * std::size_t(spec.nchannels) * kStripRows);
+  // Tiled files (VFX pipelines' TIFFs and mip-mapped EXRs) are read a row of tiles at a time:
+  // OpenImageIO 2.4's read_scanlines divides by zero on them (SIGFPE). Strips stay aligned to
+  // the tile height; the last one ends at the image's edge.
+  const bool tiled = spec.tile_width > 0 && spec.tile_height > 0;
+  const int stripRows = tiled ? spec.tile_height * std::max(1, 64 / spec.tile_height) : 64;
+  const int stripWidth =
+      tiled ? (spec.width + spec.tile_width - 1) / spec.tile_width * spec.tile_width : spec.width;
+  std::vector<float> strip(std::size_t(stripWidth) * std::size_t(spec.nchannels) *
+                           std::size_t(stripRows));
   const int lastRow = spec.y + spec.height;
-  for (int y = spec.y; y < lastRow; y += kStripRows) {
-    const int end = std::min(y + kStripRows, lastRow);
+  for (int y = spec.y; y < lastRow; y += stripRows) {
+    const int end = std::min(y + stripRows, lastRow);
     const auto readStrip = [&] {
+      if (tiled) {
+        return input.read_tiles(0, 0, spec.x, spec.x + spec.width, y, end, spec.z,
+                                spec.z + std::max(1, spec.depth), 0, spec.nchannels,
+                                OIIO::TypeDesc::FLOAT, strip.data());
+      }
       return input.read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
                                   strip.data());
     };
@@ -225,8 +257,18 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
   const fs::path target(path);
   const fs::path temporary = target.parent_path() / ("." + target.stem().string() + ".saving" +
                                                      target.extension().string());
-  if (!output->open(temporary.string(), spec) ||
-      !output->write_image(OIIO::TypeDesc::FLOAT, image.data()) || !output->close()) {
+  {
+    std::error_code ignored;
+    if (fs::is_directory(target, ignored))
+      return makeError(path + ": is a folder, not a file that can be replaced");
+  }
+  // Past a file-size limit (ulimit -f) the kernel sends SIGXFSZ, which would kill the process
+  // and leave the temporary file; ignored, the write fails instead and is cleaned up below.
+  const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
+  const bool written = output->open(temporary.string(), spec) &&
+                       output->write_image(OIIO::TypeDesc::FLOAT, image.data()) && output->close();
+  std::signal(SIGXFSZ, previousHandler);
+  if (!written) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
     return makeError(path + ": cannot write (" + cleanOiioMessage(output->geterror()) + ")");
@@ -243,7 +285,8 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
   std::error_code ec;
   fs::rename(temporary, target, ec);
   if (ec) {
-    fs::remove(temporary, ec);
+    std::error_code ignored;  // the rename's error is the one to report
+    fs::remove(temporary, ignored);
     return makeError(path + ": cannot replace the file (" + ec.message() + ")");
   }
   return {};

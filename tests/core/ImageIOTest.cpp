@@ -2,6 +2,10 @@
 #include "core/image/ImageIO.h"
 #include "support/TestPaths.h"
 
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
@@ -197,6 +201,59 @@ std::vector<unsigned char> pngHeaderClaiming(std::uint32_t width, std::uint32_t 
 void writeBytes(const std::string& path, const std::vector<unsigned char>& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+// Writes `image` tiled (tile x tile texels), as VFX pipelines write TIFF and EXR; with `mipmap`
+// as a mip-mapped texture made by OpenImageIO's maketx (what texture pipelines hand artists).
+void writeTiled(const Image& image, const std::string& path, OIIO::TypeDesc type, int tile,
+                bool mipmap) {
+  OIIO::ImageSpec spec(image.width(), image.height(), image.channels(), type);
+  spec.tile_width = spec.tile_height = tile;
+  if (mipmap) {
+    OIIO::ImageBuf buffer(
+        OIIO::ImageSpec(image.width(), image.height(), image.channels(), OIIO::TypeDesc::FLOAT),
+        const_cast<float*>(image.data()));
+    OIIO::ImageSpec config;
+    config.tile_width = config.tile_height = tile;
+    config.format = type;
+    ASSERT_TRUE(
+        OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, buffer, path, config))
+        << OIIO::geterror();
+    return;
+  }
+  auto output = OIIO::ImageOutput::create(path);
+  ASSERT_TRUE(output) << path;
+  ASSERT_TRUE(output->open(path, spec)) << output->geterror();
+  ASSERT_TRUE(output->write_image(OIIO::TypeDesc::FLOAT, image.data())) << output->geterror();
+  ASSERT_TRUE(output->close());
+}
+
+// Tiled files used to crash the data check (SIGFPE inside OpenImageIO's scanline reader). Sizes
+// that are not multiples of the tile size leave partial edge tiles, the case most easily wrong.
+TEST(ImageIO, TiledTiffAndMipMappedExrVerifyAndLoadExactly) {
+  const Image pattern = quantizedPattern(250, 130, 3, 1024);  // exact in half and float
+  const std::string folder = scratchFolder();
+  struct Case {
+    std::string name;
+    OIIO::TypeDesc type;
+    bool mipmap;
+  };
+  for (const Case& c : {Case{"tiled.tif", OIIO::TypeDesc::FLOAT, false},
+                        Case{"tiled16.tif", OIIO::TypeDesc::UINT16, false},
+                        Case{"tiled_mip.exr", OIIO::TypeDesc::HALF, true}}) {
+    const std::string path = folder + "/" + c.name;
+    writeTiled(pattern, path, c.type, 64, c.mipmap);
+    const Status verified = verifyImageData(path);
+    EXPECT_TRUE(verified.ok()) << verified.error();
+    Result<Image> loaded = loadImage(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    ASSERT_EQ(loaded->width(), 250) << c.name;  // the top level, not a smaller one
+    ASSERT_EQ(loaded->height(), 130) << c.name;
+    for (std::size_t i = 0; i < pattern.valueCount(); ++i) {
+      ASSERT_EQ(std::lround(loaded->data()[i] * 1024.0f), std::lround(pattern.data()[i] * 1024.0f))
+          << c.name << " value " << i;
+    }
+  }
 }
 
 TEST(ImageIO, RefusesEnormousHeaderBeforeAllocating) {

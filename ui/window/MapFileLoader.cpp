@@ -1,6 +1,7 @@
 // MapFileLoader; see MapFileLoader.h.
 #include "ui/window/MapFileLoader.h"
 
+#include "core/compression/MapFile.h"
 #include "core/image/ImageFileTypes.h"
 #include "core/image/ImageIO.h"
 #include "ui/document/MaterialDocument.h"
@@ -51,7 +52,7 @@ bool MapFileLoader::load(const QString& path, std::optional<core::MapSlot> slot)
   if (!slot)
     return false;
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  core::Result<core::Image> image = core::loadImage(path.toStdString());
+  core::Result<core::Image> image = core::loadMapFile(path.toStdString());
   QApplication::restoreOverrideCursor();
   if (!image) {
     QMessageBox::warning(m_parent, tr("Cannot load map"), QString::fromStdString(image.error()));
