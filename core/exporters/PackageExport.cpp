@@ -13,6 +13,11 @@ namespace relief::core::inline exporters {
 
 std::string exportStem(const Material& material) {
   std::string stem = material.name().empty() ? std::string("material") : material.name();
+  // File systems allow 255 bytes a name, and a name runs through every error message: a few
+  // words are enough (a 50 MB name once filled a terminal).
+  constexpr std::size_t kMaxStem = 80;
+  if (stem.size() > kMaxStem)
+    stem.resize(kMaxStem);
   std::replace_if(
       stem.begin(), stem.end(),
       [](unsigned char c) { return !(std::isalnum(c) || c == '-' || c == '_'); }, '_');
@@ -34,8 +39,11 @@ Status writeCompressed(const Preset& preset, MapSlot slot, const std::string& fo
   job.settings = *choice;
   job.measure = false;
   Result<CompressionOutcome> outcome = runCompressionJob(job, control);
-  if (!outcome)
-    return makeError(std::string(mapSlotLabel(slot)) + " map: " + outcome.error());
+  if (!outcome) {
+    const std::string& source = preset.material.map(slot).sourcePath;
+    return makeError((source.empty() ? std::string(mapSlotLabel(slot)) + " map" : source) + ": " +
+                     outcome.error());
+  }
   const TextureContainer container =
       containerFor(choice->format, options.textures == PackageTextures::DdsWherePossible);
   const std::string path =

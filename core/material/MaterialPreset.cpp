@@ -1,5 +1,6 @@
 // Preset files; see MaterialPreset.h.
 #include "core/material/MaterialPreset.h"
+#include "core/compression/MapFile.h"
 
 #include "core/base/AtomicFile.h"
 #include "core/image/ImageIO.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace relief::core::inline material {
 namespace {
@@ -153,8 +155,13 @@ void readMaps(const QJsonObject& object, const std::string& path, Preset& preset
       problems.add("map '" + name + "' has no path");
       continue;
     }
+    // A NUL would cut the path short where the file system sees it: another file would load.
+    if (relative.contains(QChar(0))) {
+      problems.add(name + " map: the path contains a NUL character; not loaded");
+      continue;
+    }
     const std::string mapPath = QDir::cleanPath(presetDir.absoluteFilePath(relative)).toStdString();
-    Result<Image> image = loadImage(mapPath);
+    Result<Image> image = loadMapFile(mapPath);
     if (!image) {
       problems.add(name + " map not loaded: " + image.error());
       continue;
@@ -248,13 +255,23 @@ bool needsFloat(const Image& image) {
 
 Result<LoadedPreset> loadPreset(const std::string& path) {
   QFile file(QString::fromStdString(path));
-  if (!file.exists())
+  const QFileInfo info(file);
+  if (!info.exists())
     return makeError(path + ": file not found");
+  // A FIFO would block the read forever and /dev/zero would fill memory: only regular files of
+  // a sane size are read (QFileInfo follows links, so a link to either is refused too).
+  if (!info.isFile())
+    return makeError(path + ": not a regular file (a preset is a .relief JSON file)");
+  if (info.size() > kMaxPresetBytes) {
+    return makeError(path + ": " + std::to_string(info.size() / (1024 * 1024)) +
+                     " MiB is larger than any preset (the limit is " +
+                     std::to_string(kMaxPresetBytes / (1024 * 1024)) + " MiB)");
+  }
   if (!file.open(QIODevice::ReadOnly)) {
     return makeError(path + ": cannot open (" + file.errorString().toStdString() + ")");
   }
   QJsonParseError parseError;
-  const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
+  const QJsonDocument document = QJsonDocument::fromJson(file.read(kMaxPresetBytes), &parseError);
   if (parseError.error != QJsonParseError::NoError) {
     return makeError(path + ": not a valid preset: " + parseError.errorString().toStdString() +
                      " at byte " + std::to_string(parseError.offset));
@@ -273,9 +290,11 @@ Result<LoadedPreset> loadPreset(const std::string& path) {
     return makeError(path + ": \"version\" must be a positive integer");
   }
   if (version > kPresetVersion) {
-    return makeError(path + ": written by a newer Relief (preset version " +
-                     std::to_string(int(version)) + "; this program reads up to " +
-                     std::to_string(kPresetVersion) + ")");
+    // The number as written (2^63 too), not as an int would hold it.
+    char written[32];
+    std::snprintf(written, sizeof written, "%.0f", version);
+    return makeError(path + ": written by a newer Relief (preset version " + written +
+                     "; this program reads up to " + std::to_string(kPresetVersion) + ")");
   }
 
   LoadedPreset loaded;

@@ -22,6 +22,8 @@ constexpr std::string_view kPresetFormatName = "relief-material";
 // 1: the first format (technique, parameters, maps). 2: adds per-map compression choices and
 // the optional view (camera, light, mesh). Version 1 files are read and written back as 2.
 constexpr int kPresetVersion = 2;
+// Presets are small JSON files (a few KiB); anything larger is refused before it is read.
+constexpr qint64 kMaxPresetBytes = qint64(16) << 20;
 
 // How a map should be compressed when exported; empty = not compressed. In a file it is
 // {"format": "bc5", "quality": "normal", "mipmaps": true}, names from the format table

@@ -1,6 +1,7 @@
 // MeshImport; see MeshImport.h.
 #include "core/mesh/MeshImport.h"
 
+#include "core/mesh/GltfPreflight.h"
 #include "core/mesh/TangentFrames.h"
 
 #include <assimp/postprocess.h>
@@ -27,6 +28,8 @@ Result<ImportedMesh> importMesh(const std::string& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     return makeError(path + ": file not found");
   }
+  if (Status checked = preflightGltf(path); !checked)
+    return makeError(checked.error());
   Assimp::Importer importer;
   // Our own tangents unless the file has them, so do not ask Assimp to compute any.
   const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
@@ -93,6 +96,17 @@ Result<ImportedMesh> importMesh(const std::string& path) {
 
   if (!anyTriangles)
     return makeError(path + ": the file contains no triangles");
+  // A NaN or infinite position would leave the mesh unframeable and the render silently empty.
+  std::size_t nonFinite = 0;
+  for (const Vertex& vertex : mesh.vertices) {
+    const glm::vec3& p = vertex.position;
+    nonFinite += (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) ? 0 : 1;
+  }
+  if (nonFinite > 0) {
+    return makeError(path + ": " + std::to_string(nonFinite) + " of " +
+                     std::to_string(mesh.vertices.size()) +
+                     " vertices have non-finite positions (NaN or infinity)");
+  }
   if (!allHaveUvs) {
     return makeError(path +
                      ": the mesh has no texture coordinates (UVs); Relief needs them to map the "

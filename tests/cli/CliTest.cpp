@@ -18,6 +18,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/stat.h>
+
 namespace relief::test {
 namespace {
 
@@ -669,6 +671,175 @@ TEST(Cli, EveryCommandHasHelp) {
   // The parameter list in render --help comes from core's table.
   CliRun render = runCli({QStringLiteral("render"), QStringLiteral("--help")});
   EXPECT_NE(render.out.find("normalYDown"), std::string::npos);
+}
+
+// ---- Hostile and unusual files (issue: nothing crashes, hangs or lies) ----
+
+// A legacy DDS header (128 bytes) with the fields the readers check; no texel data follows.
+std::string ddsHeader(std::uint32_t width, std::uint32_t height, std::uint32_t mipCount,
+                      std::uint32_t pixelFlags, const char* fourCC, std::uint32_t caps2 = 0,
+                      std::uint32_t depth = 0) {
+  std::string bytes(128, '\0');
+  const auto put = [&bytes](std::size_t offset, std::uint32_t value) {
+    for (int i = 0; i < 4; ++i)
+      bytes[offset + std::size_t(i)] = char((value >> (8 * i)) & 0xFF);
+  };
+  bytes.replace(0, 4, "DDS ");
+  put(4, 124);
+  put(8, 0x1007);
+  put(12, height);
+  put(16, width);
+  put(24, depth);
+  put(28, mipCount);
+  put(76, 32);  // pixel format size
+  put(80, pixelFlags);
+  if (fourCC)
+    bytes.replace(84, 4, fourCC);
+  put(108, 0x1000);  // caps: texture
+  put(112, caps2);
+  return bytes;
+}
+
+TEST(Cli, HostileTexturesAreRefusedByRelief_sOwnReader) {
+  const std::string folder = scratchFolder() + "/hostile-dds";
+  std::filesystem::create_directories(folder);
+  struct Case {
+    std::string name;
+    std::string bytes;
+    std::string problem;
+  };
+  const std::uint32_t kFourCC = 0x4;
+  const std::vector<Case> cases = {
+      // Uncompressed (flags without FourCC, bit count 0): OpenImageIO's reader spun forever.
+      {"uncompressed.dds", ddsHeader(64, 64, 1, 0x40, nullptr) + std::string(64 * 64 * 4, 'x'),
+       "uncompressed"},
+      {"cube.dds", ddsHeader(64, 64, 1, kFourCC, "DXT1", 0xFE00) + std::string(6 * 2048, 'x'),
+       "cube map"},
+      {"volume.dds", ddsHeader(64, 64, 1, kFourCC, "DXT1", 0x200000, 4) + std::string(8192, 'x'),
+       "volume"},
+      // Legal for DDS, but beyond the images Relief decodes into (it aborted on allocation).
+      {"huge.dds", ddsHeader(32768, 32768, 1, kFourCC, "DXT1"), "outside 1..16384"},
+      {"mips.dds", ddsHeader(64, 64, 0xFFFFFFFFu, kFourCC, "DXT1") + std::string(2048, 'x'),
+       "4294967295 mip levels"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = folder + "/" + c.name;
+    writeBytes(path, c.bytes);
+    expectCleanFailure(runCli({QStringLiteral("info"), q(path)}), path, c.problem);
+    expectCleanFailure(runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(path),
+                               QStringLiteral("--format"), QStringLiteral("bc1"),
+                               QStringLiteral("--out"), q(folder + "/out.dds")}),
+                       path, c.problem);
+  }
+  // A DDS renamed to .png is still not handed to OpenImageIO.
+  writeBytes(folder + "/disguised.png", cases.front().bytes);
+  expectCleanFailure(runCli({QStringLiteral("info"), q(folder + "/disguised.png")}),
+                     folder + "/disguised.png", "compressed texture");
+}
+
+TEST(Cli, PresetsThatAreNotFilesOrAreHugeAreRefusedAtOnce) {
+  const std::string folder = scratchFolder() + "/hostile-presets";
+  std::filesystem::create_directories(folder);
+  const std::string fifo = folder + "/fifo.relief";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expectCleanFailure(runCli({QStringLiteral("preset"), QStringLiteral("validate"), q(fifo)}), fifo,
+                     "not a regular file");
+  const std::string zero = folder + "/zero.relief";
+  std::filesystem::remove(zero);
+  std::filesystem::create_symlink("/dev/zero", zero);
+  expectCleanFailure(runCli({QStringLiteral("preset"), QStringLiteral("validate"), q(zero)}), zero,
+                     "not a regular file");
+  const std::string big = folder + "/big.relief";
+  writeBytes(big, "{");
+  std::filesystem::resize_file(big, std::uintmax_t(20) << 20);  // sparse: no disk used
+  expectCleanFailure(runCli({QStringLiteral("preset"), QStringLiteral("validate"), q(big)}), big,
+                     "larger than any preset");
+  // A version past what an int holds is reported as written.
+  const std::string future = folder + "/future.relief";
+  writeBytes(future, R"({"format": "relief-material", "version": 9223372036854775808})");
+  expectCleanFailure(runCli({QStringLiteral("preset"), QStringLiteral("validate"), q(future)}),
+                     future, "version 9223372036854775808");
+}
+
+TEST(Cli, HostileMeshesAreRefusedBeforeAssimpReadsThem) {
+  const std::string folder = scratchFolder() + "/hostile-meshes";
+  std::filesystem::create_directories(folder);
+  const auto render = [&folder](const std::string& mesh) {
+    return runCli({q(std::string("render")), QStringLiteral("--color"),
+                   q(sourcePath("samples/tiles/tiles_color.png")), QStringLiteral("--mesh"),
+                   q(mesh), QStringLiteral("--size"), QStringLiteral("64x64"),
+                   QStringLiteral("--out"), q(folder + "/out.png")});
+  };
+  // 20,000 nested nodes overflowed Assimp's recursion (SIGSEGV).
+  std::string nodes;
+  for (int i = 0; i < 20000; ++i)
+    nodes += (i ? "," : "") +
+             (i + 1 < 20000 ? "{\"children\":[" + std::to_string(i + 1) + "]}" : std::string("{}"));
+  const std::string deep = folder + "/deep.gltf";
+  writeBytes(deep,
+             "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+             "\"nodes\":[" +
+                 nodes + "]}");
+  expectCleanFailure(render(deep), deep, "nested more than 256");
+  // A buffer outside the mesh's folder is not read as vertex data.
+  const std::string escaping = folder + "/escaping.gltf";
+  writeBytes(
+      escaping,
+      R"({"asset":{"version":"2.0"},"buffers":[{"uri":"../../etc/passwd","byteLength":10}]})");
+  expectCleanFailure(render(escaping), escaping, "outside the file's folder");
+  // A glb whose header claims 4 GB is refused from its first 12 bytes.
+  std::string glb = "glTF";
+  const std::uint32_t version = 2, length = 0xFFFFFFF0u;
+  glb.append(reinterpret_cast<const char*>(&version), 4);
+  glb.append(reinterpret_cast<const char*>(&length), 4);
+  glb += std::string(64, '\0');
+  const std::string claims = folder + "/claims.glb";
+  writeBytes(claims, glb);
+  expectCleanFailure(render(claims), claims, "bytes but the file has");
+  // NaN positions used to render nothing with exit 0.
+  const std::string nan = folder + "/nan.obj";
+  writeBytes(nan, "v 0 0 0\nv 1 0 0\nv nan 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+  expectCleanFailure(render(nan), nan, "non-finite");
+}
+
+// Tiled TIFF and tiled, mip-mapped EXR (what VFX pipelines hand artists) crashed `info` with
+// SIGFPE. oiiotool (OpenImageIO's own tool, a Debian package Relief installs) writes them.
+TEST(Cli, InfoReadsTiledTiffAndMipMappedExr) {
+  const std::string folder = scratchFolder() + "/tiled";
+  std::filesystem::create_directories(folder);
+  const std::vector<QStringList> writes = {
+      {QStringLiteral("--pattern"), QStringLiteral("checker"), QStringLiteral("250x130"),
+       QStringLiteral("3"), QStringLiteral("--tile"), QStringLiteral("64"), QStringLiteral("64"),
+       QStringLiteral("-o"), q(folder + "/tiled.tif")},
+      {QStringLiteral("--pattern"), QStringLiteral("checker"), QStringLiteral("250x130"),
+       QStringLiteral("3"), QStringLiteral("-d"), QStringLiteral("half"), QStringLiteral("-otex"),
+       q(folder + "/mip.exr")},
+  };
+  for (const QStringList& arguments : writes) {
+    QProcess oiiotool;
+    oiiotool.start(QStringLiteral("oiiotool"), arguments);
+    ASSERT_TRUE(oiiotool.waitForFinished(60000));
+    ASSERT_EQ(oiiotool.exitCode(), 0) << oiiotool.readAllStandardError().toStdString();
+  }
+  for (const char* name : {"tiled.tif", "mip.exr"}) {
+    const CliRun run = runCli({QStringLiteral("info"), q(folder + "/" + name)});
+    EXPECT_FALSE(run.crashed) << name;
+    EXPECT_EQ(run.exitCode, 0) << name << ": " << run.err;
+    EXPECT_NE(run.out.find("size: 250x130"), std::string::npos) << run.out;
+  }
+}
+
+TEST(Cli, SavingOverAFolderSaysSoAndKeepsIt) {
+  const std::string folder = scratchFolder() + "/out-is-folder";
+  const std::string target = folder + "/normal.png";
+  std::filesystem::create_directories(target);
+  const CliRun run =
+      runCli({QStringLiteral("generate"), QStringLiteral("normal"), QStringLiteral("--in"),
+              q(sourcePath("samples/tiles/tiles_height.png")), QStringLiteral("--out"), q(target)});
+  expectCleanFailure(run, target, "is a folder");
+  EXPECT_EQ(run.err.find("Success"), std::string::npos) << run.err;
+  EXPECT_TRUE(std::filesystem::is_directory(target));
 }
 
 }  // namespace
