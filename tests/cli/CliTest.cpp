@@ -10,6 +10,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QThread>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 #include <fstream>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace relief::test {
 namespace {
@@ -840,6 +842,73 @@ TEST(Cli, SavingOverAFolderSaysSoAndKeepsIt) {
   expectCleanFailure(run, target, "is a folder");
   EXPECT_EQ(run.err.find("Success"), std::string::npos) << run.err;
   EXPECT_TRUE(std::filesystem::is_directory(target));
+}
+
+// A private Xvfb for one test (its own display number); stopped when the object goes.
+class PrivateXServer {
+ public:
+  PrivateXServer() {
+    m_display = 400 + int(::getpid() % 400);
+    while (std::filesystem::exists(socket()))
+      ++m_display;
+    m_server.start(QStringLiteral("Xvfb"),
+                   QStringList{QStringLiteral(":%1").arg(m_display), QStringLiteral("-screen"),
+                               QStringLiteral("0"), QStringLiteral("640x480x24"),
+                               QStringLiteral("-nolisten"), QStringLiteral("tcp")});
+    for (int i = 0; i < 200 && !std::filesystem::exists(socket()); ++i)
+      QThread::msleep(50);
+  }
+  ~PrivateXServer() {
+    m_server.terminate();
+    m_server.waitForFinished(5000);
+  }
+  bool running() const { return std::filesystem::exists(socket()); }
+  QProcessEnvironment environment() const {
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("DISPLAY"), QStringLiteral(":%1").arg(m_display));
+    return environment;
+  }
+
+ private:
+  std::string socket() const { return "/tmp/.X11-unix/X" + std::to_string(m_display); }
+  int m_display = 0;
+  QProcess m_server;
+};
+
+QStringList smallRender(const std::string& out) {
+  return {QStringLiteral("render"), q(samplePreset("tiles")), QStringLiteral("--size"),
+          QStringLiteral("96x64"),  QStringLiteral("--out"),  q(out)};
+}
+
+// Render farms run renders in parallel: rounds of four at once on one private Xvfb (which resets
+// whenever its last client leaves, the case where the display probe's early disconnect let Qt's
+// connection land in a reset and abort), none may fail.
+TEST(Cli, ParallelRendersOnOneXServerAllSucceed) {
+  PrivateXServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start";
+  const std::string folder = scratchFolder() + "/parallel";
+  std::filesystem::create_directories(folder);
+  int failures = 0;
+  std::string firstError;
+  for (int round = 0; round < 3; ++round) {
+    std::vector<std::unique_ptr<QProcess>> renders;
+    for (int i = 0; i < 4; ++i) {
+      auto render = std::make_unique<QProcess>();
+      render->setProcessEnvironment(server.environment());
+      render->start(QStringLiteral(RELIEF_CLI_PATH),
+                    smallRender(folder + "/r" + std::to_string(round * 4 + i) + ".png"));
+      renders.push_back(std::move(render));
+    }
+    for (auto& render : renders) {
+      const bool finished = render->waitForFinished(120000);
+      if (!finished || render->exitStatus() != QProcess::NormalExit || render->exitCode() != 0) {
+        ++failures;
+        if (firstError.empty())
+          firstError = render->readAllStandardError().toStdString();
+      }
+    }
+  }
+  EXPECT_EQ(failures, 0) << "first failure: " << firstError;
 }
 
 }  // namespace
