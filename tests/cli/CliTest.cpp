@@ -733,6 +733,12 @@ TEST(Cli, HostileTexturesAreRefusedByRelief_sOwnReader) {
                                QStringLiteral("--out"), q(folder + "/out.dds")}),
                        path, c.problem);
   }
+  // Whole-number options are whole numbers: "0.5" used to be read as level 0.
+  const CliRun half =
+      runCli({QStringLiteral("decode"), q(folder + "/mips.dds"), QStringLiteral("--out"),
+              q(folder + "/level.png"), QStringLiteral("--level"), QStringLiteral("0.5")});
+  EXPECT_EQ(half.exitCode, 2);
+  EXPECT_NE(half.err.find("'0.5' is not a whole number"), std::string::npos) << half.err;
   // A DDS renamed to .png is still not handed to OpenImageIO.
   writeBytes(folder + "/disguised.png", cases.front().bytes);
   expectCleanFailure(runCli({QStringLiteral("info"), q(folder + "/disguised.png")}),
