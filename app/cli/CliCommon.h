@@ -21,6 +21,10 @@ constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
 
 void printOut(const QString& text);
+// Core's names and labels (UTF-8 string views) as QStrings.
+inline QString qstr(std::string_view text) {
+  return QString::fromUtf8(text.data(), qsizetype(text.size()));
+}
 void printError(const QString& text);  // prefixed with "relief-cli: "
 
 // Arguments as QStrings (argv decoded with the locale, as Qt does).
@@ -57,7 +61,7 @@ auto namedOption(const QCommandLineParser& parser, const QString& option, const 
   const QString given = parser.value(option);
   QStringList names;
   for (const auto& entry : table) {
-    const QString name = QString::fromUtf8(entry.name.data(), qsizetype(entry.name.size()));
+    const QString name = qstr(entry.name);
     if (name == given)
       return valueOf(entry);
     names << name;
@@ -88,10 +92,8 @@ std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh);
 template <class Enum, class NameOf>
 QString enumNames(std::span<const Enum> values, NameOf nameOf) {
   QStringList result;
-  for (Enum value : values) {
-    const std::string_view name = nameOf(value);
-    result << QString::fromUtf8(name.data(), qsizetype(name.size()));
-  }
+  for (const auto& value : values)
+    result << qstr(nameOf(value));
   return result.join(QStringLiteral("|"));
 }
 

@@ -14,10 +14,6 @@
 namespace relief::cli {
 namespace {
 
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
 QString formatNames() {
   std::vector<core::TextureFormat> formats;
   for (const core::TextureFormatInfo& info : core::allTextureFormats())
@@ -155,10 +151,8 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
   job.settings = {*format, *quality, parser.isSet(QStringLiteral("mips"))};
   job.heightScale = *heightScale;
   job.measure = parser.isSet(QStringLiteral("metrics"));
-  if (core::Result<std::vector<std::string>> check =
-          core::checkCompression(*job.map, job.slot, *format);
-      !check) {
-    printError(QString::fromStdString(inPath + ": " + check.error()) +
+  if (const std::string problem = core::formatSlotProblem(*format, job.slot); !problem.empty()) {
+    printError(QString::fromStdString(inPath + ": " + problem) +
                QStringLiteral("; pass --normal or --height if the map is one, or choose another "
                               "format"));
     return kExitUsage;

@@ -8,16 +8,10 @@
 namespace relief::cli {
 namespace {
 
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
-template <class Choices>
-QString choiceNames(const Choices& choices) {
-  QStringList names;
-  for (const auto& choice : choices)
-    names << qstr(choice.name);
-  return names.join(QLatin1Char('|'));
+// A table's names joined with '|', for --help and the usage line.
+template <class Table>
+QString names(const Table& table) {
+  return enumNames(std::span(table), [](const auto& entry) { return entry.name; });
 }
 
 QString description() {
@@ -30,7 +24,7 @@ QString description() {
 CliOptions options() {
   return {
       {QStringLiteral("preset"), QStringLiteral("file"), QStringLiteral("The .relief preset."), {}},
-      {QStringLiteral("to"), QStringLiteral("kind"), choiceNames(core::allExportKinds()) + ".", {}},
+      {QStringLiteral("to"), QStringLiteral("kind"), names(core::allExportKinds()) + ".", {}},
       {QStringLiteral("out"),
        QStringLiteral("folder"),
        QStringLiteral("The folder to write (created if needed)."),
@@ -42,12 +36,12 @@ CliOptions options() {
        {}},
       {QStringLiteral("maps"), QStringLiteral("format"),
        QStringLiteral("package: data maps as %1; the colour map stays 8-bit sRGB PNG.")
-           .arg(choiceNames(core::packageMapFormats())),
+           .arg(names(core::packageMapFormats())),
        qstr(core::packageMapFormats().front().name)},
       {QStringLiteral("textures"), QStringLiteral("container"),
        QStringLiteral("package: maps with a compression choice in the preset are also written "
                       "compressed: %1 (dds holds the BC formats; KTX2 the rest).")
-           .arg(choiceNames(core::packageTextureChoices())),
+           .arg(names(core::packageTextureChoices())),
        qstr(core::packageTextureChoices().front().name)},
       {QStringLiteral("strict"),
        {},
@@ -104,7 +98,7 @@ int runExport(const QStringList& arguments) {
   if (auto exit = parseOrExit(parser, arguments,
                               QStringLiteral("relief-cli export --preset <file> --to <%1> --out "
                                              "<folder>")
-                                  .arg(choiceNames(core::allExportKinds())))) {
+                                  .arg(names(core::allExportKinds())))) {
     return *exit;
   }
   if (const QString missing = missingOptions(

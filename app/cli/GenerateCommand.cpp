@@ -11,10 +11,6 @@
 namespace relief::cli {
 namespace {
 
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
 QString generatorList() {
   QString text;
   for (const core::GeneratorInfo& info : core::allGenerators()) {

@@ -18,8 +18,7 @@ int printTextureInfo(const QString& path) {
   }
   const core::TextureFormatInfo& format = core::textureFormatInfo(texture->format);
   printOut(QStringLiteral("file: %1\nformat: %2%3\nsize: %4x%5\nmip levels: %6\nbytes: %7\n")
-               .arg(path, QString::fromUtf8(format.label.data(), qsizetype(format.label.size())),
-                    texture->srgb ? QStringLiteral(" (sRGB)") : QString())
+               .arg(path, qstr(format.label), texture->srgb ? QStringLiteral(" (sRGB)") : QString())
                .arg(texture->levels.front().width)
                .arg(texture->levels.front().height)
                .arg(texture->levels.size())
@@ -62,7 +61,7 @@ int runInfo(const QStringList& arguments) {
                .arg(info->channels)
                .arg(info->bitsPerChannel)
                .arg(info->isFloat ? QStringLiteral("float") : QStringLiteral("integer"))
-               .arg(QString::fromUtf8(core::colorSpaceName(info->colorSpace).data())));
+               .arg(qstr(core::colorSpaceName(info->colorSpace))));
   return kExitOk;
 }
 

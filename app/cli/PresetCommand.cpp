@@ -7,10 +7,6 @@
 namespace relief::cli {
 namespace {
 
-QString qstr(std::string_view text) {
-  return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
 const char* kUsage =
     "Usage: relief-cli preset <validate|info> <preset.relief>\n"
     "\n"

@@ -40,8 +40,7 @@ QString parameterHelp() {
 // The option that gives a slot's map is the slot's name: --color, --normal, --height, --ao,
 // --roughness.
 QString mapOptionName(core::MapSlot slot) {
-  return QString::fromUtf8(core::mapSlotName(slot).data(),
-                           qsizetype(core::mapSlotName(slot).size()));
+  return qstr(core::mapSlotName(slot));
 }
 
 CliOptions renderOptions() {
@@ -74,10 +73,9 @@ CliOptions renderOptions() {
         {mapOptionName(slot),
          file,
          QStringLiteral("%1 map%2.")
-             .arg(QString::fromUtf8(core::mapSlotLabel(slot).data(),
-                                    qsizetype(core::mapSlotLabel(slot).size())),
-                  slot == core::MapSlot::Normal ? QStringLiteral(" (flat when omitted)")
-                                                : QString()),
+             .arg(qstr(core::mapSlotLabel(slot)), slot == core::MapSlot::Normal
+                                                      ? QStringLiteral(" (flat when omitted)")
+                                                      : QString()),
          {}});
   }
   options.push_back({QStringLiteral("mesh"), QStringLiteral("name|file"),

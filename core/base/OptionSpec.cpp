@@ -1,6 +1,8 @@
 // OptionSpec; see OptionSpec.h.
 #include "core/base/OptionSpec.h"
 
+#include "core/base/Text.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -14,13 +16,6 @@ std::string formatNumber(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
-}
-
-std::string lower(std::string_view text) {
-  std::string result(text);
-  std::transform(result.begin(), result.end(), result.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return result;
 }
 
 }  // namespace
@@ -76,7 +71,7 @@ double sanitizeOptionValue(const OptionSpec& spec, double value) {
 }
 
 Result<double> parseOptionValue(const OptionSpec& spec, std::string_view text) {
-  const std::string word = lower(text);
+  const std::string word = lowerCase(text);
   if (spec.kind == ParamKind::Bool) {
     if (word == "1" || word == "true" || word == "on" || word == "yes")
       return 1.0;
@@ -87,7 +82,7 @@ Result<double> parseOptionValue(const OptionSpec& spec, std::string_view text) {
   }
   if (spec.kind == ParamKind::Choice) {
     for (std::size_t i = 0; i < spec.choices.size(); ++i) {
-      if (lower(spec.choices[i]) == word)
+      if (lowerCase(spec.choices[i]) == word)
         return double(i);
     }
     std::string names;

@@ -1,31 +1,23 @@
 // CompressionJob; see CompressionJob.h.
 #include "core/compression/CompressionJob.h"
 
+#include "core/base/Text.h"
+
 #include <QElapsedTimer>
 
-#include <algorithm>
-#include <cctype>
 #include <cstdio>
 
 namespace relief::core::inline compression {
-namespace {
 
-std::string lowerCase(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return lower;
+std::string formatSlotProblem(TextureFormat format, MapSlot slot) {
+  if (formatSuitsSlot(format, slot))
+    return {};
+  return std::string(textureFormatInfo(format).label) + " cannot hold a " +
+         lowerCase(mapSlotLabel(slot)) + " map";
 }
 
-}  // namespace
-
-Result<std::vector<std::string>> checkCompression(const Image& map, MapSlot slot,
-                                                  TextureFormat format) {
+std::vector<std::string> compressionWarnings(const Image& map, TextureFormat format) {
   const TextureFormatInfo& info = textureFormatInfo(format);
-  if (!formatSuitsSlot(format, slot)) {
-    return makeError(std::string(info.label) + " cannot hold a " + lowerCase(mapSlotLabel(slot)) +
-                     " map");
-  }
   std::vector<std::string> warnings;
   if (const double outside = shareOutsideUnitRange(map); outside > 0.0) {
     char percent[32];
@@ -43,10 +35,8 @@ Result<std::vector<std::string>> checkCompression(const Image& map, MapSlot slot
 
 Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
                                              const WorkControl& control) {
-  Result<std::vector<std::string>> warnings =
-      checkCompression(*job.map, job.slot, job.settings.format);
-  if (!warnings)
-    return makeError(warnings.error());
+  if (std::string problem = formatSlotProblem(job.settings.format, job.slot); !problem.empty())
+    return makeError(problem);
   QElapsedTimer timer;
   timer.start();
   Result<CompressedTexture> texture = compressMap(*job.map, job.slot, job.settings, control);
@@ -56,7 +46,7 @@ Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
 
   CompressionOutcome outcome;
   outcome.job = job;
-  outcome.warnings = std::move(warnings).value();
+  outcome.warnings = compressionWarnings(*job.map, job.settings.format);
   if (job.measure) {
     Result<Image> decoded = decodeAsMap(texture.value());
     if (!decoded)

@@ -38,10 +38,12 @@ struct CompressionOutcome {
   std::vector<std::string> warnings;
 };
 
-// An error when the format cannot hold a map of this slot ("BC4 (ATI1) cannot hold a colour
-// map"), otherwise what compressing `map` into `format` loses that the artist should know.
-Result<std::vector<std::string>> checkCompression(const Image& map, MapSlot slot,
-                                                  TextureFormat format);
+// Why the format cannot hold a map of this slot ("BC4 (ATI1) cannot hold a colour map"), or
+// empty when it can. Cheap: the CLI asks before loading anything else.
+std::string formatSlotProblem(TextureFormat format, MapSlot slot);
+// What compressing `map` into `format` loses that the artist should know (values clamped to
+// 0..1, channels dropped).
+std::vector<std::string> compressionWarnings(const Image& map, TextureFormat format);
 
 // Runs one job. Fails with "cancelled" when cancelled, or with the reason the format cannot
 // hold the map; the message does not name the map (callers add its file or slot).

@@ -2,6 +2,7 @@
 #include "core/compression/TextureFile.h"
 
 #include "core/base/AtomicFile.h"
+#include "core/base/Text.h"
 #include "core/compression/MipChain.h"
 
 #include <algorithm>
@@ -11,17 +12,6 @@
 
 namespace relief::core::inline compression {
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of("/\\");
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return {};
-  std::string extension = path.substr(dot + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return extension;
-}
 
 constexpr std::array kContainers = {
     TextureContainerInfo{TextureContainer::Dds, "dds", "DDS"},

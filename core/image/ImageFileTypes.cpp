@@ -1,9 +1,9 @@
 // ImageFileTypes; see ImageFileTypes.h.
 #include "core/image/ImageFileTypes.h"
 
+#include "core/base/Text.h"
+
 #include <array>
-#include <cctype>
-#include <string>
 
 namespace relief::core::inline image {
 namespace {
@@ -22,13 +22,7 @@ std::span<const ImageFileType> imageFileTypes() {
 }
 
 const ImageFileType* imageFileTypeForPath(std::string_view path) {
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of("/\\");
-  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash))
-    return nullptr;
-  std::string extension(path.substr(dot + 1));
-  for (char& c : extension)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lowerExtension(path);
   for (const ImageFileType& type : kTypes) {
     if (type.extension == extension)
       return &type;

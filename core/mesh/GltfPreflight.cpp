@@ -2,6 +2,8 @@
 // recursive over arrays of indices, so a hostile hierarchy cannot overflow it either.
 #include "core/mesh/GltfPreflight.h"
 
+#include "core/base/Text.h"
+
 #include <QByteArray>
 #include <QFile>
 #include <QJsonArray>
@@ -11,38 +13,30 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace relief::core::inline mesh {
 namespace {
 
-std::string lowerExtension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
-
-std::uint32_t readU32(const char* bytes) {
+// 0 past the end; glb is little-endian, as is every machine Relief runs on.
+std::uint32_t readU32(const QByteArray& bytes, std::uint64_t offset) {
   std::uint32_t value = 0;
-  std::memcpy(&value, bytes, 4);  // glb is little-endian, as is every machine Relief runs on
+  if (offset + 4 <= std::uint64_t(bytes.size()))
+    std::memcpy(&value, bytes.constData() + offset, 4);
   return value;
 }
 
-// The JSON chunk of a .glb, after checking the header and chunk lengths against the file.
+// The JSON chunk of a .glb whose 12-byte header was checked, after checking every chunk's
+// length against the file.
 Result<QByteArray> glbJson(const std::string& path, const QByteArray& file) {
   const auto fail = [&path](const std::string& problem) {
     return makeError(path + ": " + problem);
   };
-  if (file.size() < 20 || std::memcmp(file.constData(), "glTF", 4) != 0)
-    return fail("not a binary glTF file (no \"glTF\" header)");
-  const std::uint32_t declared = readU32(file.constData() + 8);
-  if (declared != std::uint32_t(file.size())) {
-    return fail("the header says " + std::to_string(declared) + " bytes but the file has " +
-                std::to_string(file.size()));
-  }
-  const std::uint32_t jsonLength = readU32(file.constData() + 12);
-  if (std::memcmp(file.constData() + 16, "JSON", 4) != 0)
+  if (file.size() < 20)
+    return fail("the file ends before its JSON chunk");
+  const std::uint32_t jsonLength = readU32(file, 12);
+  if (file.mid(16, 4) != "JSON")
     return fail("the first chunk is not the JSON chunk");
   if (std::uint64_t(jsonLength) + 20 > std::uint64_t(file.size())) {
     return fail("the JSON chunk claims " + std::to_string(jsonLength) +
@@ -50,7 +44,7 @@ Result<QByteArray> glbJson(const std::string& path, const QByteArray& file) {
   }
   std::uint64_t offset = 20 + std::uint64_t(jsonLength);
   while (offset + 8 <= std::uint64_t(file.size())) {
-    const std::uint64_t length = readU32(file.constData() + offset);
+    const std::uint64_t length = readU32(file, offset);
     if (offset + 8 + length > std::uint64_t(file.size())) {
       return fail("a chunk at byte " + std::to_string(offset) + " claims " +
                   std::to_string(length) + " bytes, more than the file holds");
@@ -126,20 +120,21 @@ Status checkUris(const std::string& path, const QJsonObject& root) {
 
 Status preflightGltf(const std::string& path) {
   const std::string extension = lowerExtension(path);
-  if (extension != ".gltf" && extension != ".glb")
+  if (extension != "gltf" && extension != "glb")
     return {};
   QFile file(QString::fromStdString(path));
   if (!file.open(QIODevice::ReadOnly))
     return makeError(path + ": cannot open (" + file.errorString().toStdString() + ")");
   QByteArray json;
-  if (extension == ".glb") {
+  if (extension == "glb") {
     // The header is checked before the whole file is read: a claimed length that the file does
     // not have is refused at once.
     const QByteArray header = file.peek(12);
-    if (header.size() == 12 && std::memcmp(header.constData(), "glTF", 4) == 0 &&
-        readU32(header.constData() + 8) != std::uint32_t(file.size())) {
-      return makeError(path + ": the header says " +
-                       std::to_string(readU32(header.constData() + 8)) +
+    if (header.size() < 12 || !header.startsWith("glTF"))
+      return makeError(path + ": not a binary glTF file (no \"glTF\" header)");
+    if (const std::uint32_t declared = readU32(header, 8);
+        std::uint64_t(declared) != std::uint64_t(file.size())) {
+      return makeError(path + ": the header says " + std::to_string(declared) +
                        " bytes but the file has " + std::to_string(file.size()));
     }
     Result<QByteArray> chunk = glbJson(path, file.readAll());

@@ -2,8 +2,8 @@
 #include "ui/window/MapFileLoader.h"
 
 #include "core/compression/MapFile.h"
+#include "core/compression/TextureFile.h"
 #include "core/image/ImageFileTypes.h"
-#include "core/image/ImageIO.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/window/AppSettings.h"
 #include "ui/window/QtText.h"
@@ -19,15 +19,20 @@ namespace relief::ui::inline window {
 MapFileLoader::MapFileLoader(MaterialDocument* document, QWidget* dialogParent)
     : QObject(dialogParent), m_document(document), m_parent(dialogParent) {}
 
+// Images, and compressed textures (DDS, KTX2) read as the map they hold (core::loadMapFile).
 bool MapFileLoader::isImageFile(const QString& path) {
-  return core::imageFileTypeForPath(path.toStdString()) != nullptr;
+  return core::imageFileTypeForPath(path.toStdString()) != nullptr ||
+         core::containerForPath(path.toStdString()).has_value();
 }
 
 QString MapFileLoader::fileFilter() {
   QStringList patterns;
   for (const core::ImageFileType& type : core::imageFileTypes())
     patterns << QStringLiteral("*.") + toQString(type.extension);
-  return tr("Images (%1);;All files (*)").arg(patterns.join(QLatin1Char(' ')));
+  for (core::TextureContainer container :
+       {core::TextureContainer::Dds, core::TextureContainer::Ktx2})
+    patterns << QStringLiteral("*.") + toQString(core::textureContainerInfo(container).extension);
+  return tr("Maps (%1);;All files (*)").arg(patterns.join(QLatin1Char(' ')));
 }
 
 std::optional<core::MapSlot> MapFileLoader::askForSlot(const QString& path) {
