@@ -1,6 +1,14 @@
 # relief_target_defaults(<target>): warnings (errors under RELIEF_STRICT) and sanitizers for
 # Relief's own targets only, so third-party headers never break the build.
-if(RELIEF_SANITIZE)
+if(RELIEF_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "RELIEF_FUZZ needs clang (libFuzzer): configure with -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  # Coverage for libFuzzer in every object of ours; the targets link the fuzzer itself.
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
+                      -fno-omit-frame-pointer -g)
+  add_link_options(-fsanitize=address,undefined)
+elseif(RELIEF_SANITIZE)
   # Sanitizers apply to every target of ours, including the executables that link them.
   set(RELIEF_SANITIZER_FLAGS -fsanitize=address,undefined -fno-sanitize-recover=undefined
                              -fno-omit-frame-pointer)

@@ -28,7 +28,10 @@ Image amplifiedDifference(const Image& reference, const Image& candidate, double
                           std::optional<int> channel) {
   if (!sameSize(reference, candidate))
     return {};
-  const auto [first, last] = channelRange(reference, candidate, channel);
+  // Not a structured binding: clang before 16 cannot capture those in the lambda below.
+  const std::pair<int, int> range = channelRange(reference, candidate, channel);
+  const int first = range.first;
+  const int last = range.second;
   Image out(reference.width(), reference.height(), last - first);
   parallelFor(reference.height(), [&](int y) {
     for (int x = 0; x < reference.width(); ++x) {
@@ -45,7 +48,10 @@ Image thresholdedDifference(const Image& reference, const Image& candidate, doub
                             std::optional<int> channel) {
   if (!sameSize(reference, candidate))
     return {};
-  const auto [first, last] = channelRange(reference, candidate, channel);
+  // Not a structured binding: clang before 16 cannot capture those in the lambda below.
+  const std::pair<int, int> range = channelRange(reference, candidate, channel);
+  const int first = range.first;
+  const int last = range.second;
   Image out(reference.width(), reference.height(), 1);
   parallelFor(reference.height(), [&](int y) {
     for (int x = 0; x < reference.width(); ++x) {
