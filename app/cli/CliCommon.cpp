@@ -101,6 +101,22 @@ std::optional<int> integerOption(const QCommandLineParser& parser, const QString
   return value;
 }
 
+CliOption strictOption(const QString& doing) {
+  return {QStringLiteral("strict"),
+          {},
+          QStringLiteral("Fail when the preset has problems (a missing or unreadable map, a "
+                         "clamped value) instead of %1 what loaded.")
+              .arg(doing),
+          {}};
+}
+
+bool acceptPresetProblems(const std::vector<std::string>& problems, bool strict) {
+  for (const std::string& problem : problems)
+    printError((strict ? QString() : QStringLiteral("warning: ")) +
+               QString::fromStdString(problem));
+  return !strict || problems.empty();
+}
+
 std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh) {
   const std::string name = meshName.isEmpty() ? std::string("plane") : meshName.toStdString();
   if (const auto shape = core::findPrimitiveShape(name)) {

@@ -84,6 +84,14 @@ std::optional<double> numberOption(const QCommandLineParser& parser, const QStri
 std::optional<int> integerOption(const QCommandLineParser& parser, const QString& name,
                                  int fallback, int minimum, int maximum);
 
+// --strict, for the commands that read a preset and otherwise carry on past its problems (a
+// missing or unreadable map, a clamped value): `doing` is what they do ("exporting").
+CliOption strictOption(const QString& doing);
+
+// Prints a loaded preset's problems: as warnings, or under --strict as errors. Returns false
+// when --strict refuses the preset because it had any.
+bool acceptPresetProblems(const std::vector<std::string>& problems, bool strict);
+
 // A mesh by --mesh's value: a primitive's name (plane, cube, ...) or a mesh file; an empty
 // name is the plane. Returns an exit code after printing the problem when it cannot be had.
 std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh);

@@ -43,11 +43,7 @@ CliOptions options() {
                       "compressed: %1 (dds holds the BC formats; KTX2 the rest).")
            .arg(names(core::packageTextureChoices())),
        qstr(core::packageTextureChoices().front().name)},
-      {QStringLiteral("strict"),
-       {},
-       QStringLiteral("Fail when the preset has problems (a missing map, a clamped value) "
-                      "instead of exporting what loaded."),
-       {}},
+      strictOption(QStringLiteral("exporting")),
   };
 }
 
@@ -71,12 +67,7 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, core::ExportRe
     printError(QString::fromStdString(loaded.error()));
     return kExitFailure;
   }
-  const bool strict = parser.isSet(QStringLiteral("strict"));
-  for (const std::string& warning : loaded->warnings) {
-    printError((strict ? QString() : QStringLiteral("warning: ")) +
-               QString::fromStdString(warning));
-  }
-  if (strict && !loaded->warnings.empty())
+  if (!acceptPresetProblems(loaded->warnings, parser.isSet(QStringLiteral("strict"))))
     return kExitFailure;
   request.preset = std::move(loaded->preset);
   if (core::exportKindInfo(request.kind).usesMesh) {

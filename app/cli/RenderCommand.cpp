@@ -92,6 +92,7 @@ CliOptions renderOptions() {
                          enumNames(core::allDebugViews(), core::debugViewName) +
                          QStringLiteral(". error prints the UV error against the exact trace."),
                      QStringLiteral("shading")});
+  options.push_back(strictOption(QStringLiteral("rendering")));
   options.push_back(
       {QStringLiteral("format"),
        QStringLiteral("png|exr"),
@@ -232,9 +233,8 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
       printError(QString::fromStdString(loaded.error()));
       return kExitFailure;
     }
-    for (const std::string& warning : loaded->warnings) {
-      printError(QStringLiteral("warning: ") + QString::fromStdString(warning));
-    }
+    if (!acceptPresetProblems(loaded->warnings, parser.isSet(QStringLiteral("strict"))))
+      return kExitFailure;
     request.material = std::move(loaded->preset.material);
     request.presetView = loaded->preset.view;
   }

@@ -152,7 +152,8 @@ Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
     if (!format)
       return fail("DXGI format " + std::to_string(dxgi) + " is not one Relief reads (BC1-BC5)");
     constexpr std::uint32_t kTextureCube = 0x4;
-    if (dimension != 3 || arraySize > 1 || (miscFlag & kTextureCube))
+    // arraySize 0 is no texture at all (DDS_HEADER_DXT10: "must be at least 1").
+    if (dimension != 3 || arraySize != 1 || (miscFlag & kTextureCube))
       return fail("only single 2D textures are read (not arrays, cube maps or volumes)");
   } else {
     format = formatForFourCC(fourCC, pixelFormatFlags & kNormalFlag);

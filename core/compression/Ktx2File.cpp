@@ -185,7 +185,7 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
                       supercompression = in.u32();
   const std::uint32_t dfdOffset = in.u32(), dfdLength = in.u32();
   const std::uint32_t kvdOffset = in.u32(), kvdLength = in.u32();
-  in.skip(16);  // supercompression global data: none for the schemes read here
+  const std::uint64_t sgdOffset = in.u64(), sgdLength = in.u64();
   if (!in.ok())
     return fail("the file is shorter than a KTX2 header (" + std::to_string(bytes.size()) +
                 " bytes)");
@@ -198,6 +198,19 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
   if (supercompression != 0)
     return fail("supercompression scheme " + std::to_string(supercompression) +
                 " is not supported (only uncompressed levels are read)");
+  // Every index range lies inside the file, even those this reader does not use: a file that
+  // claims 4 GiB of key/value data is damaged, whatever else it holds (KTX2 3.9-3.11).
+  const auto outside = [&bytes](std::uint64_t offset, std::uint64_t length) {
+    return offset > bytes.size() || length > bytes.size() - offset;
+  };
+  if (outside(dfdOffset, dfdLength))
+    return fail("its data format descriptor lies outside the file");
+  if (outside(kvdOffset, kvdLength))
+    return fail("its key/value data (" + std::to_string(kvdLength) + " bytes at " +
+                std::to_string(kvdOffset) + ") lies outside the file");
+  if (outside(sgdOffset, sgdLength) || (sgdLength > 0 && supercompression == 0))
+    return fail("its supercompression data (" + std::to_string(sgdLength) + " bytes at " +
+                std::to_string(sgdOffset) + ") lies outside the file or belongs to no scheme");
   if (depth > 1 || layers > 1 || faces != 1)
     return fail("only single 2D textures are read (not arrays, cube maps or volumes)");
   if (std::string problem = textureExtentProblem(width, height, levelCount); !problem.empty())
@@ -208,7 +221,7 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
   CompressedTexture texture = textureOfUnknownOrigin(*format, srgb);
 
   // Our own keys say what the map was; other writers' files fall back to the layout's guess.
-  if (std::uint64_t(kvdOffset) + kvdLength <= bytes.size() && kvdLength > 0) {
+  if (kvdLength > 0) {
     std::size_t at = kvdOffset;
     const std::size_t end = std::size_t(kvdOffset) + kvdLength;
     while (at + 4 <= end) {
@@ -234,8 +247,6 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
       at += 4 + ((length + 3) / 4) * 4;
     }
   }
-  if (std::uint64_t(dfdOffset) + dfdLength > bytes.size())
-    return fail("its data format descriptor lies outside the file");
   if (texture.slot == MapSlot::Normal && *format == TextureFormat::Bc3)
     texture.format = TextureFormat::Dxt5nm;  // BC3 holding a normal: X in alpha, Y in green
 

@@ -2,11 +2,14 @@
 #include "core/compression/TextureFile.h"
 
 #include "core/base/AtomicFile.h"
+#include "core/base/InputFile.h"
 #include "core/base/Text.h"
 #include "core/compression/MipChain.h"
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 
@@ -81,20 +84,15 @@ Result<CompressedTexture> loadCompressedTexture(const std::string& path) {
   const std::optional<TextureContainer> container = containerForPath(path);
   if (!container)
     return makeError(path + ": not a .dds or .ktx2 file");
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
-    return makeError(path + ": cannot be opened");
   // Bounded by what a largest legal texture could need, so a huge file is refused before it is
-  // read into memory.
-  file.seekg(0, std::ios::end);
-  const std::streamoff size = file.tellg();
-  constexpr std::streamoff kLimit = std::streamoff(2) << 30;
-  if (size < 0 || size > kLimit)
-    return makeError(path + ": larger than 2 GiB; not a texture Relief reads");
-  file.seekg(0);
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-  if (!file.read(reinterpret_cast<char*>(bytes.data()), size))
-    return makeError(path + ": could not be read");
+  // read into memory (a FIFO or a device before it is opened).
+  const Result<std::uintmax_t> size = checkInputFile(path, kMaxTextureFileBytes, "texture");
+  if (!size)
+    return makeError(size.error());
+  std::ifstream file(path, std::ios::binary);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size.value()));
+  if (!file || !file.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size())))
+    return makeError(path + ": could not be read (" + std::strerror(errno) + ")");
   return *container == TextureContainer::Dds ? decodeDds(bytes, path) : decodeKtx2(bytes, path);
 }
 

@@ -25,6 +25,9 @@ namespace relief::core::inline compression {
 // texture is decoded into an Image at some point (a larger one was accepted here and then
 // aborted on allocation when decoded).
 inline constexpr int kMaxTextureDimension = kMaxImageDimension;
+// A 16384x16384 texture of 16 bytes per 4x4 block with its mips is 341 MiB; 2 GiB leaves room
+// for uncompressed-size formats a later version may read, and refuses nonsense before reading.
+inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t(2) << 30;
 
 // The header checks the DDS and KTX2 readers share: a size within 1..kMaxTextureDimension and no
 // more mip levels than the size has (`levels` as the file states it). Empty when they hold.

@@ -1,13 +1,16 @@
 // OpenImageIO-backed image files; see ImageIO.h.
 #include "core/image/ImageIO.h"
 
+#include "core/base/InputFile.h"
 #include "core/base/ThirdPartyAllocationScope.h"
+#include "core/image/ExrPreflight.h"
 #include "core/image/ImageFileTypes.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
@@ -27,23 +30,6 @@ std::string cleanOiioMessage(std::string message) {
   }
   std::replace(message.begin(), message.end(), '\n', ' ');
   return message.empty() ? std::string("unknown error") : message;
-}
-
-// Checks the things OpenImageIO reports badly or not at all: a missing file, a folder, an
-// empty file.
-Status checkReadableFile(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) {
-    return makeError(path + ": file not found");
-  }
-  if (!fs::is_regular_file(status)) {
-    return makeError(path + ": not a regular file");
-  }
-  if (fs::file_size(path, ec) == 0 && !ec) {
-    return makeError(path + ": the file is empty (0 bytes)");
-  }
-  return {};
 }
 
 ColorSpace colorSpaceOf(const OIIO::ImageSpec& spec) {
@@ -70,6 +56,28 @@ Status validateSpec(const std::string& path, const OIIO::ImageSpec& spec) {
   if (spec.nchannels < 1) {
     return makeError(path + ": the image has no channels");
   }
+  if (spec.nchannels > kMaxImageChannels) {
+    return makeError(path + ": " + std::to_string(spec.nchannels) + " channels (the limit is " +
+                     std::to_string(kMaxImageChannels) + ")");
+  }
+  return {};
+}
+
+// A PNG's pixels are deflate-compressed, and deflate never compresses better than 1032:1: a
+// file too small to hold its header's size even so is damaged or hostile. Checked before the
+// pixels' memory is allocated (a 300-byte file claiming 16384x16384 RGBA would take 4 GiB).
+Status checkPngCanHoldPixels(const std::string& path, const OIIO::ImageSpec& spec,
+                             std::uintmax_t fileBytes) {
+  constexpr double kDeflateBestRatio = 1032.0;
+  const double bits = spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8));
+  const double rowBytes = 1.0 + std::ceil(double(spec.width) * spec.nchannels * bits / 8.0);
+  const double rawBytes = rowBytes * spec.height;  // each row starts with its filter byte
+  if (double(fileBytes) * kDeflateBestRatio < rawBytes) {
+    return makeError(path + ": " + std::to_string(fileBytes) + " bytes cannot hold " +
+                     std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                     " pixels even at deflate's best ratio (1:1032); the file is cut short or "
+                     "its header is damaged");
+  }
   return {};
 }
 
@@ -86,7 +94,10 @@ bool isTextureContainer(const std::string& path) {
 }
 
 Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
-  if (Status readable = checkReadableFile(path); !readable) {
+  // OpenImageIO reports a missing file, a folder or an empty file vaguely, and would block on
+  // a FIFO: the input policy comes first.
+  const Result<std::uintmax_t> readable = checkInputFile(path, kMaxImageFileBytes, "image file");
+  if (!readable) {
     return makeError(readable.error());
   }
   if (isTextureContainer(path)) {
@@ -94,13 +105,25 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
                      ": a compressed texture (DDS or KTX2), not an image file; it is read "
                      "by Relief's texture reader (relief-cli decode, or as a map)");
   }
-  auto input = OIIO::ImageInput::open(path);
+  if (looksLikeExr(path)) {
+    if (Status header = preflightExr(path, readable.value()); !header)
+      return makeError(header.error());
+  }
+  std::unique_ptr<OIIO::ImageInput> input;
+  {
+    const ThirdPartyAllocationScope oiioMayLeakOnDamagedHeaders;
+    input = OIIO::ImageInput::open(path);
+  }
   if (!input) {
     return makeError(path + ": cannot read as an image (" + cleanOiioMessage(OIIO::geterror()) +
                      ")");
   }
   if (Status valid = validateSpec(path, input->spec()); !valid) {
     return makeError(valid.error());
+  }
+  if (std::string_view(input->format_name()) == "png") {
+    if (Status holds = checkPngCanHoldPixels(path, input->spec(), readable.value()); !holds)
+      return makeError(holds.error());
   }
   return input;
 }

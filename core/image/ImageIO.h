@@ -6,9 +6,16 @@
 #include "core/base/Result.h"
 #include "core/image/Image.h"
 
+#include <cstdint>
 #include <string>
 
 namespace relief::core::inline image {
+
+// The largest image file read: a 16384x16384 RGBA float EXR without compression is 4 GiB.
+constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t(5) << 30;
+// EXRs may carry many layers; Relief uses the first four channels and refuses absurd counts
+// (a damaged header's 1000 channels would make every row buffer a thousand times larger).
+constexpr int kMaxImageChannels = 64;
 
 // What a file's header says, without reading its pixels.
 struct ImageFileInfo {

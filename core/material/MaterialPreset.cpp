@@ -1,5 +1,6 @@
 // Preset files; see MaterialPreset.h.
 #include "core/material/MaterialPreset.h"
+#include "core/base/InputFile.h"
 #include "core/compression/MapFile.h"
 
 #include "core/base/AtomicFile.h"
@@ -254,19 +255,11 @@ bool needsFloat(const Image& image) {
 }  // namespace
 
 Result<LoadedPreset> loadPreset(const std::string& path) {
-  QFile file(QString::fromStdString(path));
-  const QFileInfo info(file);
-  if (!info.exists())
-    return makeError(path + ": file not found");
   // A FIFO would block the read forever and /dev/zero would fill memory: only regular files of
-  // a sane size are read (QFileInfo follows links, so a link to either is refused too).
-  if (!info.isFile())
-    return makeError(path + ": not a regular file (a preset is a .relief JSON file)");
-  if (info.size() > kMaxPresetBytes) {
-    return makeError(path + ": " + std::to_string(info.size() / (1024 * 1024)) +
-                     " MiB is larger than any preset (the limit is " +
-                     std::to_string(kMaxPresetBytes / (1024 * 1024)) + " MiB)");
-  }
+  // a sane size are read (links are followed, so a link to either is refused too).
+  if (auto checked = checkInputFile(path, std::uintmax_t(kMaxPresetBytes), "preset"); !checked)
+    return makeError(checked.error());
+  QFile file(QString::fromStdString(path));
   if (!file.open(QIODevice::ReadOnly)) {
     return makeError(path + ": cannot open (" + file.errorString().toStdString() + ")");
   }

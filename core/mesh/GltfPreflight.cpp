@@ -96,6 +96,29 @@ Status checkNodes(const std::string& path, const QJsonArray& nodes) {
   return {};
 }
 
+// A scene lists root nodes: each must exist and have no parent (glTF 2.0, 3.5.2). Assimp 5.2
+// builds a node listed as a root and as a child twice and loses memory (found by tests/fuzz).
+Status checkSceneRoots(const std::string& path, const QJsonObject& root) {
+  const QJsonArray nodes = root.value(QStringLiteral("nodes")).toArray();
+  std::vector<bool> isChild(std::size_t(nodes.size()), false);
+  for (const QJsonValue& node : nodes) {
+    for (const QJsonValue& child : node.toObject().value(QStringLiteral("children")).toArray())
+      isChild[std::size_t(child.toInt())] = true;  // checkNodes made sure the index exists
+  }
+  for (const QJsonValue& scene : root.value(QStringLiteral("scenes")).toArray()) {
+    for (const QJsonValue& entry : scene.toObject().value(QStringLiteral("nodes")).toArray()) {
+      const int index = entry.toInt(-1);
+      if (index < 0 || index >= nodes.size())
+        return makeError(path + ": a scene names a node " + std::to_string(index) +
+                         " that does not exist");
+      if (isChild[std::size_t(index)])
+        return makeError(path + ": node " + std::to_string(index) +
+                         " is a scene root and another node's child (glTF nodes form a tree)");
+    }
+  }
+  return {};
+}
+
 // Buffers and images may name files beside the glTF (or data: URIs), never outside its folder.
 Status checkUris(const std::string& path, const QJsonObject& root) {
   for (const QString& key : {QStringLiteral("buffers"), QStringLiteral("images")}) {
@@ -153,6 +176,8 @@ Status preflightGltf(const std::string& path) {
   const QJsonObject root = document.object();
   if (Status nodes = checkNodes(path, root.value(QStringLiteral("nodes")).toArray()); !nodes)
     return nodes;
+  if (Status roots = checkSceneRoots(path, root); !roots)
+    return roots;
   return checkUris(path, root);
 }
 

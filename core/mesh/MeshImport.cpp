@@ -1,6 +1,7 @@
 // MeshImport; see MeshImport.h.
 #include "core/mesh/MeshImport.h"
 
+#include "core/base/InputFile.h"
 #include "core/mesh/GltfPreflight.h"
 #include "core/mesh/TangentFrames.h"
 
@@ -24,10 +25,8 @@ glm::mat4 toGlm(const aiMatrix4x4& m) {
 }  // namespace
 
 Result<ImportedMesh> importMesh(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    return makeError(path + ": file not found");
-  }
+  if (auto checked = checkInputFile(path, kMaxMeshFileBytes, "mesh file"); !checked)
+    return makeError(checked.error());
   if (Status checked = preflightGltf(path); !checked)
     return makeError(checked.error());
   Assimp::Importer importer;

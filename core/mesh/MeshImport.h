@@ -6,9 +6,13 @@
 #include "core/base/Result.h"
 #include "core/mesh/Mesh.h"
 
+#include <cstdint>
 #include <string>
 
 namespace relief::core::inline mesh {
+
+// Assimp reads a whole file into memory; a mesh for a material preview is far smaller.
+inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(1) << 30;
 
 struct ImportedMesh {
   Mesh mesh;

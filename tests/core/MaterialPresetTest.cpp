@@ -126,7 +126,7 @@ TEST(MaterialPreset, RefusesWhatItCannotRead) {
       {"future.relief", "{\"format\": \"relief-material\", \"version\": 99}", "newer Relief"},
       {"badversion.relief", "{\"format\": \"relief-material\", \"version\": \"one\"}",
        "positive integer"},
-      {"empty.relief", "", "not a valid preset"},
+      {"empty.relief", "", "the file is empty"},
       // Beyond double range: not a number JSON can hold (Qt's parser says so, with the byte).
       {"huge.relief",
        "{\"format\": \"relief-material\", \"version\": 2, \"parameters\": "
