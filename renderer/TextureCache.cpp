@@ -112,6 +112,12 @@ void uploadLevel(QOpenGLTexture& texture, int level, const Image& image, MapSlot
       break;
     }
     default: {
+      // A one-channel image is already the texture's layout: uploaded without a copy, which
+      // for an 8192x8192 height map saves 256 MiB at the peak.
+      if (image.channels() == 1) {
+        texture.setData(level, QOpenGLTexture::Red, QOpenGLTexture::Float32, image.data(), &unpack);
+        break;
+      }
       const auto texels = pack<float>(image, 1, [](float v) { return v; });
       texture.setData(level, QOpenGLTexture::Red, QOpenGLTexture::Float32, texels.data(), &unpack);
       break;
