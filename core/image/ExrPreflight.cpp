@@ -11,7 +11,6 @@
 namespace relief::core::inline image {
 namespace {
 
-constexpr unsigned char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
 constexpr std::uint32_t kTiledFlag = 0x200;
 constexpr std::uint32_t kMultipartFlag = 0x1000;
 // Headers are a few KiB; more than this is not a header worth reading.
@@ -63,13 +62,6 @@ std::uint64_t tiledChunks(std::uint64_t width, std::uint64_t height, std::uint32
 }
 
 }  // namespace
-
-bool looksLikeExr(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  char magic[4] = {};
-  file.read(magic, 4);
-  return file && std::memcmp(magic, kMagic, 4) == 0;
-}
 
 Status preflightExr(const std::string& path, std::uintmax_t fileBytes) {
   std::ifstream file(path, std::ios::binary);

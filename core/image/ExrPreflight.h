@@ -13,9 +13,6 @@
 
 namespace relief::core::inline image {
 
-// True when the file starts with OpenEXR's magic number.
-bool looksLikeExr(const std::string& path);
-
 // The problem with the header, naming the file and the field; ok for files whose header holds.
 Status preflightExr(const std::string& path, std::uintmax_t fileBytes);
 

@@ -2,6 +2,7 @@
 #include "core/image/ImageIO.h"
 
 #include "core/base/InputFile.h"
+#include "core/base/Text.h"
 #include "core/base/ThirdPartyAllocationScope.h"
 #include "core/image/ExrPreflight.h"
 #include "core/image/ImageFileTypes.h"
@@ -81,16 +82,40 @@ Status checkPngCanHoldPixels(const std::string& path, const OIIO::ImageSpec& spe
   return {};
 }
 
-// DDS and KTX2 are Relief's own readers' business (core/compression/MapFile.h): OpenImageIO's
-// DDS reader spins forever on uncompressed DDS and accepts truncated files. Recognised by
-// their first bytes, so a renamed file is caught too.
-bool isTextureContainer(const std::string& path) {
+// What a file's first bytes say it is. DDS and KTX2 are Relief's own readers' business
+// (core/compression/MapFile.h): OpenImageIO's DDS reader spins forever on uncompressed DDS and
+// accepts truncated files, so a DDS renamed to .png is caught here too. For images, the
+// OpenImageIO reader named by the signature, or by the extension for formats without one
+// (TGA): OpenImageIO's own open() tries every reader it has when the first fails, which took
+// up to 13 s on a damaged PNG under the fuzzer and then reported that no reader was found
+// instead of what was wrong with the PNG.
+struct Sniffed {
+  bool textureContainer = false;
+  std::string reader;  // an OpenImageIO format name or extension
+};
+
+Sniffed sniff(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   char magic[12] = {};
   file.read(magic, sizeof magic);
   static const char kKtx2[12] = {'\xAB', 'K',    'T',  'X',  ' ',    '2',
                                  '0',    '\xBB', '\r', '\n', '\x1A', '\n'};
-  return std::memcmp(magic, "DDS ", 4) == 0 || std::memcmp(magic, kKtx2, sizeof kKtx2) == 0;
+  if (std::memcmp(magic, "DDS ", 4) == 0 || std::memcmp(magic, kKtx2, sizeof kKtx2) == 0)
+    return {true, {}};
+  struct Signature {
+    const char* bytes;
+    std::size_t size;
+    const char* reader;
+  };
+  static constexpr Signature kSignatures[] = {
+      {"\x89PNG", 4, "png"},     {"II*\0", 4, "tiff"},        {"MM\0*", 4, "tiff"},
+      {"v/1\x01", 4, "openexr"}, {"\xFF\xD8\xFF", 3, "jpeg"}, {"#?", 2, "hdr"},
+  };
+  for (const Signature& signature : kSignatures) {
+    if (std::memcmp(magic, signature.bytes, signature.size) == 0)
+      return {false, signature.reader};
+  }
+  return {false, lowerExtension(path)};
 }
 
 Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
@@ -100,22 +125,29 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
   if (!readable) {
     return makeError(readable.error());
   }
-  if (isTextureContainer(path)) {
+  const Sniffed sniffed = sniff(path);
+  if (sniffed.textureContainer) {
     return makeError(path +
                      ": a compressed texture (DDS or KTX2), not an image file; it is read "
                      "by Relief's texture reader (relief-cli decode, or as a map)");
   }
-  if (looksLikeExr(path)) {
+  if (sniffed.reader == "openexr") {
     if (Status header = preflightExr(path, readable.value()); !header)
       return makeError(header.error());
   }
-  std::unique_ptr<OIIO::ImageInput> input;
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(sniffed.reader);
+  if (!input) {
+    return makeError(path + ": not an image file Relief reads (" +
+                     cleanOiioMessage(OIIO::geterror()) + ")");
+  }
+  bool opened = false;
   {
     const ThirdPartyAllocationScope oiioMayLeakOnDamagedHeaders;
-    input = OIIO::ImageInput::open(path);
+    OIIO::ImageSpec spec;
+    opened = input->open(path, spec);
   }
-  if (!input) {
-    return makeError(path + ": cannot read as an image (" + cleanOiioMessage(OIIO::geterror()) +
+  if (!opened) {
+    return makeError(path + ": cannot read as an image (" + cleanOiioMessage(input->geterror()) +
                      ")");
   }
   if (Status valid = validateSpec(path, input->spec()); !valid) {

@@ -13,6 +13,10 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(dds ktx2 png tiff exr preset gltf glb obj)
 build=build/fuzz
+if ! command -v clang++ >/dev/null || ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1; then
+  echo "run.sh: needs clang with libFuzzer: sudo apt-get install clang libclang-rt-14-dev" >&2
+  exit 1
+fi
 
 CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DRELIEF_FUZZ=ON -DRELIEF_BUILD_TESTS=OFF -DRELIEF_BUILD_TOOLS=OFF >/dev/null
