@@ -7,6 +7,8 @@ find_package(Threads REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 find_library(FFTW3F_THREADS_LIBRARY fftw3f_threads REQUIRED)
+# Zstandard for KTX2 supercompression (scheme 2).
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
 
 # Debian's OpenImageIO config lists /usr/include/opencv4 as an include directory even when
 # OpenCV's headers are absent, which makes CMake refuse to generate. Drop that entry.

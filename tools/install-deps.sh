@@ -11,11 +11,11 @@ packages=(
   qt6-base-dev libqt6opengl6-dev libqt6openglwidgets6 qt6-qpa-plugins qt6-charts-dev
   # domain libraries
   libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev libassimp-dev
-  libsquish-dev libastcenc-dev android-libetc1-dev libfftw3-dev libxcb1-dev
+  libsquish-dev libastcenc-dev android-libetc1-dev libfftw3-dev libxcb1-dev libzstd-dev
   # tests: GoogleTest, a headless X server with Mesa's software OpenGL, shader validation
   libgtest-dev libgmock-dev xvfb xauth mesa-utils libgl1-mesa-dri glslang-tools
   # screenshots and independent image readers used while testing
-  imagemagick python3-pil python3-numpy
+  imagemagick python3-pil python3-numpy zstd
   # the Khronos glTF validator runs on Node.js (tools/gltf-validator/setup.sh fetches it)
   nodejs
 )

@@ -5,6 +5,8 @@
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
 
+#include <QFileInfo>
+
 namespace relief::cli {
 
 namespace {
@@ -17,12 +19,16 @@ int printTextureInfo(const QString& path) {
     return kExitFailure;
   }
   const core::TextureFormatInfo& format = core::textureFormatInfo(texture->format);
-  printOut(QStringLiteral("file: %1\nformat: %2%3\nsize: %4x%5\nmip levels: %6\nbytes: %7\n")
-               .arg(path, qstr(format.label), texture->srgb ? QStringLiteral(" (sRGB)") : QString())
-               .arg(texture->levels.front().width)
-               .arg(texture->levels.front().height)
-               .arg(texture->levels.size())
-               .arg(texture->byteSize()));
+  printOut(
+      QStringLiteral("file: %1\nformat: %2%3\nsize: %4x%5\nmip levels: %6\nbytes: %7\n"
+                     "on disk: %8 bytes%9\n")
+          .arg(path, qstr(format.label), texture->srgb ? QStringLiteral(" (sRGB)") : QString())
+          .arg(texture->levels.front().width)
+          .arg(texture->levels.front().height)
+          .arg(texture->levels.size())
+          .arg(texture->byteSize())
+          .arg(QFileInfo(path).size())
+          .arg(texture->zstdInFile ? QStringLiteral(" (Zstandard supercompression)") : QString()));
   return kExitOk;
 }
 

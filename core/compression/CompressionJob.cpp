@@ -1,6 +1,8 @@
 // CompressionJob; see CompressionJob.h.
 #include "core/compression/CompressionJob.h"
 
+#include "core/compression/TextureFile.h"
+
 #include "core/base/Text.h"
 
 #include <QElapsedTimer>
@@ -58,6 +60,10 @@ Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
   outcome.report.format = job.settings.format;
   outcome.report.encodeSeconds = seconds;
   outcome.report.size = measureSize(job.settings.format, job.map->channels(), texture->byteSize());
+  if (job.measure) {
+    outcome.report.size->ktx2Bytes = encodeKtx2(texture.value(), job.settings.zstdLevel).size();
+    outcome.report.size->zstdLevel = job.settings.zstdLevel;
+  }
   outcome.texture = std::make_shared<const CompressedTexture>(std::move(texture).value());
   return outcome;
 }

@@ -56,6 +56,10 @@ struct SizeFigures {
   // Against 8 bits per channel of the map as it is (RGB 24: BC1 and ETC1 are 6:1, as in the
   // reference; RGBA 32: BC3 is 4:1; a one-channel height 8: BC4 is 2:1).
   double ratioToSource = 0.0;
+  // What ships: the bytes of the KTX2 file the settings write, supercompressed with Zstandard
+  // at zstdLevel when that is above 0. 0 when not measured.
+  std::uint64_t ktx2Bytes = 0;
+  int zstdLevel = 0;
 };
 
 SizeFigures measureSize(TextureFormat format, int sourceChannels, std::uint64_t bytesWithMips);

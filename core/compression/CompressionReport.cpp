@@ -85,6 +85,10 @@ QJsonObject reportToJson(const CompressionReport& report) {
     json["bitsPerPixel"] = report.size->bitsPerPixel;
     json["ratioToRgba8"] = report.size->ratioToRgba8;
     json["ratioToSource"] = report.size->ratioToSource;
+    if (report.size->ktx2Bytes > 0) {
+      json["ktx2Bytes"] = double(report.size->ktx2Bytes);
+      json["zstdLevel"] = report.size->zstdLevel;
+    }
   }
   if (report.encodeSeconds > 0.0)
     json["encodeSeconds"] = report.encodeSeconds;
@@ -121,6 +125,15 @@ std::string reportToText(const CompressionReport& report) {
         "against the source\n",
         double(report.size->bytes), report.size->bitsPerPixel, report.size->ratioToRgba8,
         report.size->ratioToSource);
+    if (report.size->ktx2Bytes > 0) {
+      const double share = 100.0 * double(report.size->ktx2Bytes) / double(report.size->bytes);
+      text += report.size->zstdLevel > 0
+                  ? format(
+                        "on disk: %.0f bytes as KTX2 with Zstandard level %d (%.0f%% of the "
+                        "blocks)\n",
+                        double(report.size->ktx2Bytes), report.size->zstdLevel, share)
+                  : format("on disk: %.0f bytes as KTX2\n", double(report.size->ktx2Bytes));
+    }
   }
   if (report.encodeSeconds > 0.0)
     text += format("encoded in %.2f s\n", report.encodeSeconds);

@@ -28,6 +28,7 @@ struct CompressedTexture {
   MapSlot slot = MapSlot::Color;
   int sourceChannels = 4;  // channels of the map it was made from
   std::vector<CompressedLevel> levels;
+  bool zstdInFile = false;  // read from a KTX2 whose levels were Zstandard-supercompressed
 
   std::uint64_t byteSize() const;
 };

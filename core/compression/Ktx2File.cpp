@@ -2,16 +2,22 @@
 // 2.0: identifier, header (vkFormat, typeSize, size, layer/face/level counts, supercompression),
 // index (DFD, key/value data, supercompression data), level index (level 0 first), the Data
 // Format Descriptor, key/value data, then the levels from the smallest to level 0, each at an
-// offset aligned to lcm(block size, 4). The descriptor follows the Khronos Data Format
-// Specification 1.3 for compressed formats: one sample per 64-bit (or 128-bit ASTC) plane.
+// offset aligned to lcm(block size, 4), or with Zstandard supercompression (scheme 2) each
+// level compressed on its own, unaligned, with its size before compression in the level index. The
+// descriptor follows the Khronos Data Format Specification 1.3 for compressed formats: one sample
+// per 64-bit (or 128-bit ASTC) plane.
 #include "core/compression/ByteStream.h"
 #include "core/compression/MipChain.h"
 #include "core/compression/TextureFile.h"
+
+#include <zstd.h>
 
 #include <algorithm>
 #include <array>
 #include <map>
 #include <numeric>
+#include <stdexcept>
+#include <thread>
 
 namespace relief::core::inline compression {
 namespace {
@@ -27,6 +33,25 @@ constexpr std::uint32_t kChannelColorBc = 0, kChannelRed = 0, kChannelGreen = 1,
                         kChannelEtc2Color = 2, kChannelAlpha = 15;
 constexpr std::uint32_t kPrimariesBt709 = 1, kTransferLinear = 1, kTransferSrgb = 2;
 constexpr std::string_view kSlotKey = "ReliefMapSlot", kChannelsKey = "ReliefSourceChannels";
+constexpr std::uint32_t kSchemeNone = 0, kSchemeZstd = 2;
+
+// One level through Zstandard, with every core (libzstd's own workers).
+std::vector<std::uint8_t> zstdCompress(const std::vector<std::uint8_t>& data, int level) {
+  std::vector<std::uint8_t> out(ZSTD_compressBound(data.size()));
+  ZSTD_CCtx* context = ZSTD_createCCtx();
+  ZSTD_CCtx_setParameter(context, ZSTD_c_compressionLevel, level);
+  // Fails harmlessly (one thread) on a libzstd built without threads.
+  ZSTD_CCtx_setParameter(context, ZSTD_c_nbWorkers, int(std::thread::hardware_concurrency()));
+  const std::size_t size =
+      ZSTD_compress2(context, out.data(), out.size(), data.data(), data.size());
+  ZSTD_freeCCtx(context);
+  // Compressing into compressBound's room cannot fail for want of space; anything else is a
+  // bug in the call, not in the data.
+  if (ZSTD_isError(size))
+    throw std::logic_error(std::string("ZSTD_compress2: ") + ZSTD_getErrorName(size));
+  out.resize(size);
+  return out;
+}
 
 struct Sample {
   std::uint32_t channel;
@@ -133,7 +158,8 @@ std::optional<TextureFormat> formatForVk(std::uint32_t vkFormat, bool& srgb) {
 
 }  // namespace
 
-std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture) {
+std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture, int zstdLevel) {
+  const bool zstd = zstdLevel > 0;
   const TextureFormatInfo& info = textureFormatInfo(texture.format);
   const std::vector<std::uint8_t> dfd = dataFormatDescriptor(texture);
   const std::vector<std::uint8_t> kvd = keyValueData(texture);
@@ -148,7 +174,7 @@ std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture) {
   out.u32(0);  // layerCount: not an array
   out.u32(1);  // faceCount
   out.u32(std::uint32_t(levelCount));
-  out.u32(0);  // supercompressionScheme: none
+  out.u32(zstd ? kSchemeZstd : kSchemeNone);
   const std::size_t dfdOffset = kHeaderEnd + levelCount * 24;
   const std::size_t kvdOffset = dfdOffset + dfd.size();
   out.u32(std::uint32_t(dfdOffset));
@@ -161,14 +187,18 @@ std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture) {
   out.zeros(levelCount * 24);
   out.bytes(dfd.data(), dfd.size());
   out.bytes(kvd.data(), kvd.size());
-  const std::size_t alignment = std::lcm(std::size_t(info.bytesPerBlock), std::size_t(4));
+  // Supercompressed levels are not aligned (KTX2 3.13: lcm is 1 then).
+  const std::size_t alignment =
+      zstd ? 1 : std::lcm(std::size_t(info.bytesPerBlock), std::size_t(4));
   for (std::size_t i = levelCount; i-- > 0;) {  // smallest level first
     out.padTo(alignment);
     const CompressedLevel& level = texture.levels[i];
+    const std::vector<std::uint8_t> stored =
+        zstd ? zstdCompress(level.data, std::min(zstdLevel, kMaxZstdLevel)) : level.data;
     out.patchU64(levelIndex + i * 24, out.size());
-    out.patchU64(levelIndex + i * 24 + 8, level.data.size());
-    out.patchU64(levelIndex + i * 24 + 16, level.data.size());  // not supercompressed
-    out.bytes(level.data.data(), level.data.size());
+    out.patchU64(levelIndex + i * 24 + 8, stored.size());
+    out.patchU64(levelIndex + i * 24 + 16, level.data.size());  // uncompressedByteLength
+    out.bytes(stored.data(), stored.size());
   }
   return std::move(out.data());
 }
@@ -195,9 +225,9 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
     return fail("vkFormat " + std::to_string(vkFormat) + " is not one Relief reads");
   if (typeSize != 1)
     return fail("typeSize " + std::to_string(typeSize) + " is wrong for a compressed format");
-  if (supercompression != 0)
+  if (supercompression != kSchemeNone && supercompression != kSchemeZstd)
     return fail("supercompression scheme " + std::to_string(supercompression) +
-                " is not supported (only uncompressed levels are read)");
+                " is not supported (uncompressed and Zstandard levels are read)");
   // Every index range lies inside the file, even those this reader does not use: a file that
   // claims 4 GiB of key/value data is damaged, whatever else it holds (KTX2 3.9-3.11).
   const auto outside = [&bytes](std::uint64_t offset, std::uint64_t length) {
@@ -219,6 +249,7 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
   const int levels = int(std::max<std::uint32_t>(levelCount, 1));
 
   CompressedTexture texture = textureOfUnknownOrigin(*format, srgb);
+  texture.zstdInFile = supercompression == kSchemeZstd;
 
   // Our own keys say what the map was; other writers' files fall back to the layout's guess.
   if (kvdLength > 0) {
@@ -253,12 +284,14 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
   int w = int(width), h = int(height);
   for (int level = 0; level < levels; ++level) {
     ByteReader entry(bytes, kHeaderEnd + std::size_t(level) * 24);
-    const std::uint64_t offset = entry.u64(), length = entry.u64();
+    const std::uint64_t offset = entry.u64(), length = entry.u64(), unpacked = entry.u64();
     if (!entry.ok())
       return fail("the level index is cut short");
     const std::uint64_t expected = compressedLevelSize(*format, w, h);
-    if (length != expected)
-      return fail("mip level " + std::to_string(level) + " holds " + std::to_string(length) +
+    // Without supercompression the stored bytes are the blocks; with it, what they inflate to.
+    const std::uint64_t blocks = texture.zstdInFile ? unpacked : length;
+    if (blocks != expected)
+      return fail("mip level " + std::to_string(level) + " holds " + std::to_string(blocks) +
                   " bytes; a " + std::to_string(w) + "x" + std::to_string(h) + " level needs " +
                   std::to_string(expected));
     if (offset > bytes.size() || length > bytes.size() - offset)
@@ -266,8 +299,23 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
                   std::to_string(offset) + ".." + std::to_string(offset + length) + " of " +
                   std::to_string(bytes.size()) + ")");
     CompressedLevel compressed{w, h, {}};
-    compressed.data.assign(bytes.begin() + std::ptrdiff_t(offset),
-                           bytes.begin() + std::ptrdiff_t(offset + length));
+    if (texture.zstdInFile) {
+      // The output is sized by the level's dimensions (already within the limits), never by
+      // what the frame claims; a frame that inflates to anything else is refused.
+      compressed.data.resize(std::size_t(expected));
+      const std::size_t inflated = ZSTD_decompress(compressed.data.data(), compressed.data.size(),
+                                                   bytes.data() + offset, std::size_t(length));
+      if (ZSTD_isError(inflated) || inflated != expected) {
+        return fail("mip level " + std::to_string(level) + ": the Zstandard data is damaged (" +
+                    (ZSTD_isError(inflated) ? std::string(ZSTD_getErrorName(inflated))
+                                            : std::to_string(inflated) + " bytes instead of " +
+                                                  std::to_string(expected)) +
+                    ")");
+      }
+    } else {
+      compressed.data.assign(bytes.begin() + std::ptrdiff_t(offset),
+                             bytes.begin() + std::ptrdiff_t(offset + length));
+    }
     texture.levels.push_back(std::move(compressed));
     w = std::max(1, w / 2);
     h = std::max(1, h / 2);

@@ -63,18 +63,21 @@ std::string containerExtension(TextureContainer container) {
   return "." + std::string(textureContainerInfo(container).extension);
 }
 
-Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path) {
+Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path,
+                             int zstdLevel) {
   const std::optional<TextureContainer> container = containerForPath(path);
   if (!container)
     return makeError(path + ": compressed textures are saved as .dds or .ktx2");
   std::vector<std::uint8_t> bytes;
   if (*container == TextureContainer::Dds) {
+    if (zstdLevel > 0)
+      return makeError(path + ": Zstandard supercompression is a KTX2 feature; DDS has none");
     Result<std::vector<std::uint8_t>> dds = encodeDds(texture);
     if (!dds)
       return makeError(path + ": " + dds.error());
     bytes = std::move(dds).value();
   } else {
-    bytes = encodeKtx2(texture);
+    bytes = encodeKtx2(texture, zstdLevel);
   }
   return writeFileAtomically(
       path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));

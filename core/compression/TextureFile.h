@@ -56,13 +56,16 @@ std::string containerExtension(TextureContainer container);  // ".dds", ".ktx2"
 Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture);
 Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
                                     const std::string& name);
-std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture);
+// zstdLevel 1..22 supercompresses each level with Zstandard (KTX2 scheme 2); 0 does not.
+std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture, int zstdLevel = 0);
 Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
                                      const std::string& name);
 
 // Chooses the container by extension. Saving is atomic: a failed save leaves an existing file
 // as it was.
-Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path);
+// zstdLevel as for encodeKtx2; a DDS path with a level is refused (DDS has no supercompression).
+Status saveCompressedTexture(const CompressedTexture& texture, const std::string& path,
+                             int zstdLevel = 0);
 Result<CompressedTexture> loadCompressedTexture(const std::string& path);
 
 }  // namespace relief::core::inline compression

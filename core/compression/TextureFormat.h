@@ -75,6 +75,9 @@ struct CompressionSettings {
   TextureFormat format = TextureFormat::Bc1;
   CompressionQuality quality = CompressionQuality::Normal;
   bool mipmaps = false;
+  // Zstandard level (1..22) for the levels of a KTX2 file (supercompression scheme 2); 0 writes
+  // them as they are. DDS has no supercompression.
+  int zstdLevel = 0;
 
   bool operator==(const CompressionSettings&) const = default;
 };
@@ -84,6 +87,8 @@ const TextureFormatInfo& textureFormatInfo(TextureFormat format);
 std::optional<TextureFormat> findTextureFormat(std::string_view name);
 std::string_view compressionQualityName(CompressionQuality quality);
 std::optional<CompressionQuality> findCompressionQuality(std::string_view name);
+
+inline constexpr int kMaxZstdLevel = 22;
 
 double bitsPerPixel(TextureFormat format);
 bool isTwoChannelNormalFormat(TextureFormat format);  // BC5, DXT5nm, EAC RG11

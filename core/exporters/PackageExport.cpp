@@ -50,7 +50,8 @@ Status writeCompressed(const Preset& preset, MapSlot slot, const std::string& fo
       (std::filesystem::path(folder) /
        (stem + "_" + std::string(mapSlotName(slot)) + std::string(containerExtension(container))))
           .string();
-  return saveCompressedTexture(*outcome->texture, path);
+  return saveCompressedTexture(*outcome->texture, path,
+                               container == TextureContainer::Ktx2 ? choice->zstdLevel : 0);
 }
 
 }  // namespace

@@ -126,6 +126,14 @@ MapCompression readCompression(const QJsonObject& object, const std::string& slo
                  "' is not fast, normal or best; normal used");
   }
   compression.mipmaps = object.value(QStringLiteral("mipmaps")).toBool(true);
+  // "zstd": the Zstandard level of the KTX2 file an export writes (absent: none).
+  if (object.contains(QStringLiteral("zstd"))) {
+    if (const std::optional<double> level =
+            readNumber(object.value(QStringLiteral("zstd")), slot + " map: compression zstd", 0,
+                       kMaxZstdLevel, problems)) {
+      compression.zstdLevel = int(std::lround(*level));
+    }
+  }
   return compression;
 }
 
@@ -360,12 +368,13 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
     if (!compression) {
       entry.remove(QStringLiteral("compression"));
     } else {
-      entry.insert(
-          QStringLiteral("compression"),
-          QJsonObject{
-              {QStringLiteral("format"), qstr(textureFormatInfo(compression->format).name)},
-              {QStringLiteral("quality"), qstr(compressionQualityName(compression->quality))},
-              {QStringLiteral("mipmaps"), compression->mipmaps}});
+      QJsonObject choice{
+          {QStringLiteral("format"), qstr(textureFormatInfo(compression->format).name)},
+          {QStringLiteral("quality"), qstr(compressionQualityName(compression->quality))},
+          {QStringLiteral("mipmaps"), compression->mipmaps}};
+      if (compression->zstdLevel > 0)
+        choice.insert(QStringLiteral("zstd"), compression->zstdLevel);
+      entry.insert(QStringLiteral("compression"), choice);
     }
     maps.insert(key, entry);
   }

@@ -603,6 +603,52 @@ TEST(Cli, CompressWritesDdsAndKtx2WithMetrics) {
   EXPECT_EQ(decoded.width(), 64);
 }
 
+// --zstd: the same blocks in a smaller KTX2 (lossless), the size on disk reported; refused for
+// DDS and outside 0..22.
+TEST(Cli, CompressSupercompressesKtx2WithZstandard) {
+  const std::string folder = scratchFolder();
+  const std::string normal = croppedSample("bricks/bricks_normal.png");
+  const auto compress = [&](const QString& level, const std::string& out) {
+    return runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(normal),
+                   QStringLiteral("--normal"), QStringLiteral("--format"), QStringLiteral("bc5"),
+                   QStringLiteral("--mips"), QStringLiteral("--zstd"), level,
+                   QStringLiteral("--out"), q(out), QStringLiteral("--metrics"),
+                   QStringLiteral("json")});
+  };
+  const CliRun plain = compress(QStringLiteral("0"), folder + "/plain.ktx2");
+  const CliRun packed = compress(QStringLiteral("19"), folder + "/packed.ktx2");
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  ASSERT_EQ(packed.exitCode, 0) << packed.err;
+  const auto plainBytes = std::filesystem::file_size(folder + "/plain.ktx2");
+  const auto packedBytes = std::filesystem::file_size(folder + "/packed.ktx2");
+  EXPECT_LT(packedBytes, plainBytes);
+  // The metrics report what ships: the KTX2 file's size, as it is on disk.
+  EXPECT_EQ(jsonOf(packed)["ktx2Bytes"].toDouble(), double(packedBytes));
+  EXPECT_EQ(jsonOf(packed)["zstdLevel"].toInt(), 19);
+  EXPECT_EQ(jsonOf(plain)["ktx2Bytes"].toDouble(), double(plainBytes));
+  // Lossless: both decode to the same texels.
+  for (const char* name : {"plain", "packed"}) {
+    const CliRun decoded =
+        runCli({QStringLiteral("decode"), q(folder + "/" + name + ".ktx2"), QStringLiteral("--raw"),
+                QStringLiteral("--out"), q(folder + "/" + name + ".png")});
+    ASSERT_EQ(decoded.exitCode, 0) << decoded.err;
+  }
+  EXPECT_TRUE(core::loadImage(folder + "/plain.png").value() ==
+              core::loadImage(folder + "/packed.png").value());
+  const CliRun info = runCli({QStringLiteral("info"), q(folder + "/packed.ktx2")});
+  EXPECT_NE(info.out.find("on disk: " + std::to_string(packedBytes) +
+                          " bytes (Zstandard supercompression)"),
+            std::string::npos)
+      << info.out;
+  const CliRun dds = compress(QStringLiteral("3"), folder + "/n.dds");
+  EXPECT_EQ(dds.exitCode, 2);
+  EXPECT_NE(dds.err.find("KTX2 feature"), std::string::npos) << dds.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/n.dds"));
+  const CliRun tooHigh = compress(QStringLiteral("23"), folder + "/high.ktx2");
+  EXPECT_EQ(tooHigh.exitCode, 2);
+  EXPECT_NE(tooHigh.err.find("--zstd"), std::string::npos) << tooHigh.err;
+}
+
 TEST(Cli, CompressWarnsWhenAFloatMapIsClamped) {
   // An EXR height from 0 to 2: half its values cannot be stored by any GPU format here.
   core::Image height(64, 64, 1);

@@ -140,9 +140,9 @@ TEST(PackageExport, ReloadsAsTheSameMaterial) {
 TEST(PackageExport, MapsWithACompressionChoiceAreAlsoWrittenCompressed) {
   Preset preset = syntheticPreset();
   preset.compression[std::size_t(MapSlot::Color)] =
-      CompressionSettings{TextureFormat::Astc6x6, CompressionQuality::Fast, true};
+      CompressionSettings{TextureFormat::Astc6x6, CompressionQuality::Fast, true, 5};
   preset.compression[std::size_t(MapSlot::Normal)] =
-      CompressionSettings{TextureFormat::Bc5, CompressionQuality::Normal, true};
+      CompressionSettings{TextureFormat::Bc5, CompressionQuality::Normal, true, 5};
   preset.compression[std::size_t(MapSlot::Height)] =
       CompressionSettings{TextureFormat::Bc4, CompressionQuality::Normal, false};
   for (PackageTextures textures : {PackageTextures::Ktx2, PackageTextures::DdsWherePossible}) {
@@ -160,6 +160,9 @@ TEST(PackageExport, MapsWithACompressionChoiceAreAlsoWrittenCompressed) {
     ASSERT_TRUE(normal.ok()) << normal.error();
     ASSERT_TRUE(height.ok()) << height.error();
     EXPECT_EQ(colour->format, TextureFormat::Astc6x6);
+    // The preset's Zstandard level applies to KTX2 files; DDS has no supercompression.
+    EXPECT_TRUE(colour->zstdInFile);
+    EXPECT_EQ(normal->zstdInFile, !dds);
     EXPECT_EQ(colour->levels.size(), 5u);  // 16x16 with mips
     EXPECT_EQ(normal->format, TextureFormat::Bc5);
     EXPECT_EQ(normal->slot, MapSlot::Normal);

@@ -62,7 +62,7 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   preset.material.setParameter(ParamId::NormalYDown, 1.0);
   preset.material.setParameter(ParamId::ShadowMode, double(ShadowMode::Hard));
   preset.compression[std::size_t(MapSlot::Normal)] =
-      CompressionSettings{TextureFormat::Bc5, CompressionQuality::Best, false};
+      CompressionSettings{TextureFormat::Bc5, CompressionQuality::Best, false, 12};
   OrbitCamera camera;
   camera.yawDeg = -40.0f;
   camera.target = glm::vec3(0.1f, 0.2f, 0.3f);

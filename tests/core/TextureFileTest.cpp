@@ -299,6 +299,82 @@ TEST(Ktx2FileTest, EveryFormatRoundTripsWithItsDescriptor) {
   }
 }
 
+// Zstandard supercompression (KTX2 scheme 2): each level is one Zstandard frame that the
+// reference `zstd` tool (Debian's zstd package, independent of our reader) inflates to the
+// level's blocks; the level index holds the stored and the inflated sizes (KTX2 3.9.7).
+TEST(Ktx2FileTest, ZstandardLevelsInflateWithTheReferenceToolToTheBlocks) {
+  const std::string folder = test::scratchFolder() + "/zstd";
+  std::filesystem::create_directories(folder);
+  for (const TextureFormat format :
+       {TextureFormat::Bc1, TextureFormat::Bc5, TextureFormat::Etc2, TextureFormat::Astc4x4}) {
+    const CompressedTexture texture = compressed(format, 64, 48, true);
+    const std::vector<std::uint8_t> bytes = encodeKtx2(texture, 9);
+    ASSERT_EQ(u32At(bytes, 44), 2u) << "supercompressionScheme";
+    for (std::size_t level = 0; level < texture.levels.size(); ++level) {
+      const std::uint64_t offset = u64At(bytes, 80 + 24 * level);
+      const std::uint64_t stored = u64At(bytes, 88 + 24 * level);
+      EXPECT_EQ(u64At(bytes, 96 + 24 * level), texture.levels[level].data.size());
+      ASSERT_LE(offset + stored, bytes.size());
+      const std::string frame = folder + "/level.zst";
+      std::ofstream(frame, std::ios::binary)
+          .write(reinterpret_cast<const char*>(bytes.data() + offset), std::streamsize(stored));
+      QProcess zstd;
+      zstd.start(QStringLiteral("zstd"),
+                 {QStringLiteral("-d"), QStringLiteral("-c"), QString::fromStdString(frame)});
+      ASSERT_TRUE(zstd.waitForFinished(30000)) << "the zstd tool (Debian package zstd)";
+      ASSERT_EQ(zstd.exitCode(), 0) << zstd.readAllStandardError().toStdString();
+      const QByteArray inflated = zstd.readAllStandardOutput();
+      const std::vector<std::uint8_t>& blocks = texture.levels[level].data;
+      ASSERT_EQ(std::size_t(inflated.size()), blocks.size()) << "level " << level;
+      EXPECT_TRUE(std::equal(blocks.begin(), blocks.end(),
+                             reinterpret_cast<const std::uint8_t*>(inflated.data())))
+          << "level " << level;
+    }
+    // And our reader gives the same blocks back, knowing the file was supercompressed.
+    Result<CompressedTexture> back = decodeKtx2(bytes, "z.ktx2");
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_TRUE(back->zstdInFile);
+    ASSERT_EQ(back->levels.size(), texture.levels.size());
+    for (std::size_t level = 0; level < texture.levels.size(); ++level)
+      EXPECT_EQ(back->levels[level].data, texture.levels[level].data);
+  }
+}
+
+TEST(Ktx2FileTest, ZstandardMakesCompressibleBlocksSmallerAndDamageIsRefused) {
+  // A constant map compresses to repeated blocks: Zstandard must shrink them a lot.
+  Image flat(64, 64, 4, ColorSpace::Srgb);
+  std::fill(flat.data(), flat.data() + flat.valueCount(), 0.5f);
+  const CompressedTexture texture =
+      compressMap(flat, MapSlot::Color, {TextureFormat::Bc1, CompressionQuality::Fast, false})
+          .value();
+  const std::vector<std::uint8_t> plain = encodeKtx2(texture);
+  const std::vector<std::uint8_t> packed = encodeKtx2(texture, 3);
+  EXPECT_LT(packed.size(), plain.size() - texture.levels[0].data.size() / 2);
+
+  // A damaged frame, a frame that inflates to a different size, and a claimed size that is
+  // not the level's are all refused by name.
+  std::vector<std::uint8_t> damaged = packed;
+  const std::uint64_t offset = u64At(packed, 80);
+  damaged[std::size_t(offset) + 2] ^= 0xff;
+  Result<CompressedTexture> bad = decodeKtx2(damaged, "damaged.ktx2");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("damaged.ktx2: mip level 0: the Zstandard data is damaged"),
+            std::string::npos)
+      << bad.error();
+  std::vector<std::uint8_t> claims = packed;
+  ByteWriter patch;
+  patch.u64(texture.levels[0].data.size() * 4);
+  std::copy(patch.data().begin(), patch.data().end(), claims.begin() + 96);
+  bad = decodeKtx2(claims, "claims.ktx2");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("mip level 0 holds 8192 bytes"), std::string::npos) << bad.error();
+  // Saving a DDS with a Zstandard level is refused: DDS has no supercompression.
+  const std::string dds = test::scratchFolder() + "/zstd.dds";
+  const Status saved = saveCompressedTexture(texture, dds, 3);
+  ASSERT_FALSE(saved.ok());
+  EXPECT_NE(saved.error().find("KTX2 feature"), std::string::npos);
+}
+
 // --- Hostile files ---------------------------------------------------------------------------
 
 TEST(TextureFileHostileTest, EveryTruncationIsAnErrorNotACrash) {
@@ -346,7 +422,9 @@ TEST(TextureFileHostileTest, WrongSizesAndEnormousDimensionsAreRefused) {
        "outside the file"},
       {"KTX2 descriptor past the end", patched(ktx, 52, 0x7FFFFFFF, 4), true, "descriptor"},
       {"KTX2 unknown vkFormat", patched(ktx, 12, 37, 4), true, "vkFormat"},
-      {"KTX2 supercompressed", patched(ktx, 44, 2, 4), true, "supercompression"},
+      {"KTX2 Zstandard flag on raw levels", patched(ktx, 44, 2, 4), true,
+       "Zstandard data is damaged"},
+      {"KTX2 BasisLZ", patched(ktx, 44, 1, 4), true, "supercompression scheme 1"},
       {"KTX2 a cube map", patched(ktx, 36, 6, 4), true, "2D"},
   };
   for (const Case& c : cases) {

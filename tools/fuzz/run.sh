@@ -32,7 +32,8 @@ for target in "${targets[@]}"; do
   cp -n tests/fuzz/corpus/"$target"/* "$work"/ 2>/dev/null || true
   echo "== $target: ${seconds} s"
   # -rss_limit_mb: readers must refuse what they cannot hold, so 2 GiB is a finding.
-  "$build/tests/fuzz/relief_fuzz_$target" "$work" -max_total_time="$seconds" -timeout=10 \
+  # -timeout is wall-clock time: on a busy machine replay a timeout alone before trusting it.
+  "$build/tests/fuzz/relief_fuzz_$target" "$work" -max_total_time="$seconds" -timeout=30 \
     -rss_limit_mb=2048 -max_len=16384 -artifact_prefix="$findings/" -print_final_stats=1 \
     2>&1 | grep -E '^#[0-9]+.*(DONE|pulse)|stat::|SUMMARY|ERROR|Test unit written' || true
   if [ "${MERGE:-0}" = 1 ]; then
