@@ -25,7 +25,8 @@ if ! command -v npm >/dev/null 2>&1; then
 fi
 
 if [ "${1:-}" = "--bench" ]; then
-  packages+=(python3-opencv)
+  # OpenCV for bench-generate; scikit-image ships the real photographs the benchmarks use.
+  packages+=(python3-opencv python3-skimage)
 fi
 
 missing=()

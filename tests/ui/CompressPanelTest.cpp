@@ -220,7 +220,7 @@ TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatB
   ui::CompareAllDialog* dialog = panel()->compareAllDialog();
   QSignalSpy finished(dialog->runner(), &ui::CompressionRunner::finished);
   dialog->start(MapSlot::Height, document()->material().map(MapSlot::Height).image,
-                core::CompressionQuality::Fast, 0.03);
+                core::CompressionQuality::Fast, 3, 0.03);
   dialog->show();
   ASSERT_TRUE(finished.wait(240000));
   const std::size_t formats = core::formatsForSlot(MapSlot::Height).size();
@@ -233,7 +233,13 @@ TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatB
     EXPECT_GT(outcome.report.image.psnr, 30.0)
         << core::textureFormatInfo(outcome.job.settings.format).name;
     EXPECT_TRUE(outcome.report.height.has_value());
+    // The size on disk is the KTX2 file at Zstandard level 3: the blocks (lossless, so never
+    // much more than them) plus a header of under 1 KiB.
+    EXPECT_EQ(outcome.report.size->zstdLevel, 3);
+    EXPECT_GT(outcome.report.size->ktx2Bytes, 0u);
+    EXPECT_LT(outcome.report.size->ktx2Bytes, outcome.report.size->bytes + 1024u);
   }
+  EXPECT_TRUE(dialog->table()->horizontalHeaderItem(2)->text().contains(QStringLiteral("Zstd 3")));
   // Pick EAC R11 and use it.
   for (int row = 0; row < dialog->table()->rowCount(); ++row) {
     if (dialog->table()->item(row, 0)->data(Qt::UserRole).toInt() == int(TextureFormat::EacR11))

@@ -23,6 +23,7 @@ namespace {
 enum Column {
   FormatColumn,
   BitsColumn,
+  DiskColumn,
   RatioColumn,
   QualityColumn,
   SsimColumn,
@@ -54,8 +55,8 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
   resize(860, 720);
   m_runner = new CompressionRunner(this);
   m_table = new QTableWidget(0, ColumnCount, this);
-  m_table->setHorizontalHeaderLabels({tr("Format"), tr("Bits/texel"), tr("vs RGBA8"), tr("Quality"),
-                                      tr("SSIM"), tr("Detail"), tr("Seconds")});
+  m_table->setHorizontalHeaderLabels({tr("Format"), tr("Bits/texel"), tr("On disk"), tr("vs RGBA8"),
+                                      tr("Quality"), tr("SSIM"), tr("Detail"), tr("Seconds")});
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setSelectionMode(QAbstractItemView::SingleSelection);
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -126,8 +127,9 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
 }
 
 void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
-                             core::CompressionQuality quality, double heightScale) {
+                             core::CompressionQuality quality, int zstdLevel, double heightScale) {
   m_slot = slot;
+  m_texels = double(map->width()) * double(map->height());
   m_outcomes.clear();
   m_table->setRowCount(0);
   m_table->setSortingEnabled(false);
@@ -136,6 +138,11 @@ void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Ima
                      .arg(map->width())
                      .arg(map->height())
                      .arg(toQString(core::compressionQualityName(quality))));
+  m_table->horizontalHeaderItem(DiskColumn)
+      ->setText(zstdLevel > 0 ? tr("On disk, Zstd %1").arg(zstdLevel) : tr("On disk"));
+  m_table->horizontalHeaderItem(DiskColumn)
+      ->setToolTip(tr("What ships: the KTX2 file's bits per texel, header included%1")
+                       .arg(zstdLevel > 0 ? tr(", levels supercompressed with Zstandard") : ""));
   m_table->horizontalHeaderItem(QualityColumn)
       ->setText(slot == core::MapSlot::Normal ? tr("Mean angle (°)") : tr("PSNR (dB)"));
   m_table->horizontalHeaderItem(DetailColumn)
@@ -144,11 +151,15 @@ void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Ima
                                                 : tr("Max error"));
   std::vector<core::CompressionJob> jobs;
   for (core::TextureFormat format : core::formatsForSlot(slot))
-    jobs.push_back({map, slot, {format, quality, false}, heightScale});
+    jobs.push_back({map, slot, {format, quality, false, zstdLevel}, heightScale});
   m_cancel->setEnabled(true);
   m_progress->setValue(0);
   updateChart();
   m_runner->start(std::move(jobs));
+}
+
+double CompareAllDialog::onDiskBitsPerTexel(const core::CompressionOutcome& outcome) const {
+  return m_texels > 0.0 ? double(outcome.report.size->ktx2Bytes) * 8.0 / m_texels : 0.0;
 }
 
 std::optional<core::TextureFormat> CompareAllDialog::selectedFormat() const {
@@ -171,6 +182,10 @@ void CompareAllDialog::addRow(const core::CompressionOutcome& outcome) {
   m_table->setItem(row, BitsColumn,
                    sortableNumber(report.size->bitsPerPixel,
                                   QString::number(report.size->bitsPerPixel, 'f', 2)));
+  const double diskBits = onDiskBitsPerTexel(outcome);
+  auto* disk = sortableNumber(diskBits, QString::number(diskBits, 'f', 2));
+  disk->setToolTip(tr("%1 bytes").arg(report.size->ktx2Bytes));
+  m_table->setItem(row, DiskColumn, disk);
   m_table->setItem(row, RatioColumn,
                    sortableNumber(report.size->ratioToRgba8,
                                   tr("%1:1").arg(report.size->ratioToRgba8, 0, 'f', 1)));
@@ -226,8 +241,11 @@ void CompareAllDialog::updateChart() {
     point->setMarkerSize(10.0);
     point->setPointLabelsVisible(true);
     point->setPointLabelsClipping(false);
+    // The label says what ships too: the KTX2 file's bits per texel on disk.
     point->setPointLabelsFormat(
-        toQString(core::textureFormatInfo(outcome.job.settings.format).name));
+        tr("%1 (%2 on disk)")
+            .arg(toQString(core::textureFormatInfo(outcome.job.settings.format).name))
+            .arg(onDiskBitsPerTexel(outcome), 0, 'f', 2));
     point->append(outcome.report.size->bitsPerPixel, y);
     chart->addSeries(point);
     series.push_back(point);

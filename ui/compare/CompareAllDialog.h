@@ -28,9 +28,10 @@ class CompareAllDialog : public QDialog {
  public:
   explicit CompareAllDialog(QWidget* parent = nullptr);
 
-  // Starts the comparison of `map` (in `slot`) at `quality`.
+  // Starts the comparison of `map` (in `slot`) at `quality`; the size on disk is that of a
+  // KTX2 file supercompressed at `zstdLevel` (0: none).
   void start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
-             core::CompressionQuality quality, double heightScale);
+             core::CompressionQuality quality, int zstdLevel, double heightScale);
 
   QTableWidget* table() const { return m_table; }
   CompressionRunner* runner() const { return m_runner; }
@@ -55,7 +56,10 @@ class CompareAllDialog : public QDialog {
   QLabel* m_status;
   QPushButton* m_cancel;
   QPushButton* m_use;
+  double onDiskBitsPerTexel(const core::CompressionOutcome& outcome) const;
+
   core::MapSlot m_slot = core::MapSlot::Color;
+  double m_texels = 0.0;  // of the map compared
   std::vector<core::CompressionOutcome> m_outcomes;
 };
 

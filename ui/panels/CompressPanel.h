@@ -18,6 +18,7 @@
 #include <optional>
 
 class QCheckBox;
+class QSpinBox;
 class QComboBox;
 class QLabel;
 class QProgressBar;
@@ -72,6 +73,7 @@ class CompressPanel : public QWidget {
   CompressionRunner* m_runner;
   std::array<Row, core::kMapSlotCount> m_rows;
   QCheckBox* m_mipmaps;
+  QSpinBox* m_zstd;
   QPushButton* m_compress;
   QPushButton* m_cancel;
   QProgressBar* m_progress;
