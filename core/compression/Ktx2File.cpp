@@ -40,6 +40,9 @@ std::vector<std::uint8_t> zstdCompress(const std::vector<std::uint8_t>& data, in
   std::vector<std::uint8_t> out(ZSTD_compressBound(data.size()));
   ZSTD_CCtx* context = ZSTD_createCCtx();
   ZSTD_CCtx_setParameter(context, ZSTD_c_compressionLevel, level);
+  // A 4-byte checksum per frame, so a damaged file is refused instead of decoded to wrong
+  // blocks of the right size.
+  ZSTD_CCtx_setParameter(context, ZSTD_c_checksumFlag, 1);
   // Fails harmlessly (one thread) on a libzstd built without threads.
   ZSTD_CCtx_setParameter(context, ZSTD_c_nbWorkers, int(std::thread::hardware_concurrency()));
   const std::size_t size =

@@ -507,6 +507,13 @@ void writeTextures(CorpusWriter& w) {
   w.file(k, "sgdlength.ktx2", ktx2With64(ktx, kSgdLength, 0xfffffffffffffff0ull),
          "2^64 bytes of supercompression data");
 
+  // Zstandard-supercompressed levels: a damaged frame, and an inflated size that is a lie.
+  const Bytes zstd = seed("ktx2", "bc1-zstd.ktx2");
+  Bytes damagedFrame = zstd;
+  damagedFrame[std::size_t(get32(zstd, kLevel0Offset)) + 5] ^= 0x5a;
+  w.file(k, "zstdframe.ktx2", damagedFrame, "a damaged Zstandard frame in level 0");
+  w.file(k, "zstdsize.ktx2", ktx2With64(zstd, kLevel0Length + 8, 0x10000000000ull),
+         "level 0 claims to inflate to 1 TiB");
   w.file(k, "empty.dds", "", "an empty file");
   w.file(k, "empty.ktx2", "", "an empty file");
   w.file(k, "magiconly.dds", "DDS ", "the DDS magic alone");

@@ -41,6 +41,10 @@ for format in bc1 bc2 bc3 bc4 bc5 dxt5nm etc1 etc2 etc2a eac-r11 eac-rg11 astc4x
   done
 done
 
+# Zstandard-supercompressed KTX2 (scheme 2), with mips.
+"$cli" compress --in "$work/map.png" --format bc1 --mips --zstd 9 --out "$corpus/ktx2/seed-bc1-zstd.ktx2" >/dev/null
+"$cli" compress --in "$work/map.png" --format astc4x4 --zstd 3 --out "$corpus/ktx2/seed-astc4x4-zstd.ktx2" >/dev/null
+
 # Presets: the samples, a version 1 file and one with compression choices and a view.
 for preset in samples/*/*.relief; do cp "$preset" "$corpus/preset/seed-$(basename "$preset")"; done
 cat >"$corpus/preset/seed-version1.relief" <<'JSON'
@@ -51,7 +55,8 @@ JSON
 cat >"$corpus/preset/seed-view.relief" <<'JSON'
 {"format": "relief-material", "version": 2, "name": "v", "technique": "relief",
  "maps": {"normal": {"path": "n.png", "colorSpace": "linear",
-                     "compression": {"format": "bc5", "quality": "fast", "mipmaps": true}}},
+                     "compression": {"format": "bc5", "quality": "fast", "mipmaps": true,
+                                     "zstd": 9}}},
  "view": {"mesh": "sphere", "camera": {"yaw": 30, "pitch": 20, "distance": 3},
           "light": {"azimuth": 45, "elevation": 30, "color": [1, 0.9, 0.8], "intensity": 1}}}
 JSON
