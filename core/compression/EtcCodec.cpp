@@ -192,86 +192,131 @@ void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]
   }
 }
 
+// Each (table, multiplier, base) candidate's eight values come out sorted in this index order:
+// the table's modifiers ascend as 3, 2, 1, 0, 4, 5, 6, 7, and neither a non-negative multiplier
+// nor the clamp changes an order. So a texel's nearest value is found by counting the
+// midpoints below it (no search, no branch), which the compiler vectorises over the texels.
+constexpr int kEacAscending[8] = {3, 2, 1, 0, 4, 5, 6, 7};
+
 void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                       CompressionQuality quality, std::uint8_t out[8]) {
-  // Target values in the code's units: 0..2047 (R11) or 0..255 (alpha).
-  const double scale = elevenBit ? 2047.0 : 255.0;
-  double target[16];
-  double low = std::numeric_limits<double>::max(), high = std::numeric_limits<double>::lowest();
+  // Target values in the code's units: 0..2047 (R11) or 0..255 (alpha). Texels outside the
+  // image (validMask) take the block's middle and weight 0.
+  const float scale = elevenBit ? 2047.0f : 255.0f;
+  float target[16], weight[16];
+  float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
   for (int t = 0; t < 16; ++t) {
-    target[t] = std::clamp(double(values[t]), 0.0, 1.0) * scale;
-    if (validMask & (1 << t)) {
+    target[t] = std::clamp(values[t], 0.0f, 1.0f) * scale;
+    weight[t] = (validMask & (1 << t)) ? 1.0f : 0.0f;
+    if (weight[t] > 0.0f) {
       low = std::min(low, target[t]);
       high = std::max(high, target[t]);
     }
   }
   if (validMask == 0)
-    low = high = 0.0;
+    low = high = 0.0f;
+  const float validCount = float(std::max(1, __builtin_popcount(unsigned(validMask))));
   // The value a (base, multiplier, modifier) decodes to, in the same units.
   const auto decoded = [elevenBit](int base, int multiplier, int modifier) {
     if (elevenBit) {
       const int step = multiplier == 0 ? modifier : modifier * multiplier * 8;
-      return double(std::clamp(base * 8 + 4 + step, 0, 2047));
+      return float(std::clamp(base * 8 + 4 + step, 0, 2047));
     }
-    return double(clamp255(base + modifier * multiplier));
+    return float(clamp255(base + modifier * multiplier));
   };
-  // Search: every table; multipliers around the one the block's range asks for; bases around
-  // the one that centres the table on the range. Wider for better quality.
+  // How far the wider search reaches around the ideal multiplier and the centred base.
   const int multiplierReach = quality == CompressionQuality::Fast     ? 0
                               : quality == CompressionQuality::Normal ? 1
                                                                       : 2;
   const int baseReach = quality == CompressionQuality::Best ? 3 : 1;
-  double bestError = std::numeric_limits<double>::max();
+  float bestError = std::numeric_limits<float>::max();
   int bestBase = 0, bestMultiplier = 1, bestTable = 0;
-  int bestIndices[16] = {};
-  const double unit = elevenBit ? 8.0 : 1.0;  // value units per base step and per multiplier
-  for (int table = 0; table < 16; ++table) {
+  const float unit = elevenBit ? 8.0f : 1.0f;  // value units per base step and per multiplier
+  // One table's search: multipliers within multiplierReach of the one the block's range asks
+  // for, bases within baseReach of the one that centres the table on the range, then the
+  // least-squares base.
+  const auto searchTable = [&](int table) {
     const int* modifiers = kEacModifiers[table];
     const int span = modifiers[7] - modifiers[3];  // largest minus smallest modifier
     const int ideal =
-        std::clamp(int(std::lround((high - low) / (span * unit))), elevenBit ? 0 : 1, 15);
+        std::clamp(int(std::lround((high - low) / (float(span) * unit))), elevenBit ? 0 : 1, 15);
     const int firstMultiplier = std::max(elevenBit ? 0 : 1, ideal - multiplierReach);
     const int lastMultiplier = std::min(15, ideal + multiplierReach);
     for (int multiplier = firstMultiplier; multiplier <= lastMultiplier; ++multiplier) {
       // Base that puts the table's middle on the range's middle.
-      const double middleModifier = 0.5 * (modifiers[7] + modifiers[3]);
-      const double centre =
-          0.5 * (low + high) - middleModifier * (multiplier == 0 ? 1.0 : multiplier * unit);
-      const int centreBase = int(std::lround(elevenBit ? (centre - 4.0) / 8.0 : centre));
-      for (int base = std::max(0, centreBase - baseReach);
-           base <= std::min(255, centreBase + baseReach); ++base) {
-        double palette[8];
-        for (int i = 0; i < 8; ++i)
-          palette[i] = decoded(base, multiplier, modifiers[i]);
-        double error = 0.0;
-        int indices[16] = {};
-        for (int t = 0; t < 16 && error < bestError; ++t) {
-          double best = std::numeric_limits<double>::max();
-          for (int i = 0; i < 8; ++i) {
-            const double difference = palette[i] - target[t];
-            if (difference * difference < best) {
-              best = difference * difference;
-              indices[t] = i;
-            }
-          }
-          if (validMask & (1 << t))
-            error += best;
+      const float middleModifier = 0.5f * float(modifiers[7] + modifiers[3]);
+      const float centre = 0.5f * (low + high) -
+                           middleModifier * (multiplier == 0 ? 1.0f : float(multiplier) * unit);
+      const int centreBase = int(std::lround(elevenBit ? (centre - 4.0f) / 8.0f : centre));
+      // The error of one base, and (in `offset`) the mean distance from each texel to the
+      // value it picked, which says where the least-squares base for those picks lies.
+      const auto evaluate = [&](int base, float& offset) {
+        float sorted[8], midpoint[7];
+        for (int k = 0; k < 8; ++k)
+          sorted[k] = decoded(base, multiplier, modifiers[kEacAscending[k]]);
+        for (int k = 0; k < 7; ++k)
+          midpoint[k] = 0.5f * (sorted[k] + sorted[k + 1]);
+        float error = 0.0f, shift = 0.0f;
+        for (int t = 0; t < 16; ++t) {
+          int rank = 0;
+          for (int k = 0; k < 7; ++k)
+            rank += target[t] > midpoint[k] ? 1 : 0;
+          const float difference = sorted[rank] - target[t];
+          error += weight[t] * difference * difference;
+          shift += weight[t] * difference;
         }
+        offset = shift / validCount;
+        return error;
+      };
+      const auto consider = [&](int base, float error) {
         if (error < bestError) {
           bestError = error;
           bestBase = base;
           bestMultiplier = multiplier;
           bestTable = table;
-          std::copy(indices, indices + 16, bestIndices);
+        }
+      };
+      float bestHere = std::numeric_limits<float>::max(), offsetHere = 0.0f;
+      int baseHere = centreBase;
+      for (int base = std::max(0, centreBase - baseReach);
+           base <= std::min(255, centreBase + baseReach); ++base) {
+        float offset = 0.0f;
+        const float error = evaluate(base, offset);
+        consider(base, error);
+        if (error < bestHere) {
+          bestHere = error;
+          baseHere = base;
+          offsetHere = offset;
         }
       }
+      // Least-squares refinement: move the base by the picks' mean distance (in base steps)
+      // and try there too, unless the window already covered it.
+      const int refined = std::clamp(baseHere - int(std::lround(offsetHere / unit)), 0, 255);
+      if (std::abs(refined - centreBase) > baseReach) {
+        float unused = 0.0f;
+        consider(refined, evaluate(refined, unused));
+      }
     }
-  }
+  };
+  // Every table (narrowing to the best few tables after a first pass lost 2% of normal-map
+  // angle accuracy for 25% of speed, measured with tools/bench-compress). Stops once exact.
+  for (int table = 0; table < 16 && bestError > 0.0f; ++table)
+    searchTable(table);
+  // The indices of the winner (the search kept only its error).
+  const int* modifiers = kEacModifiers[bestTable];
+  float sorted[8];
+  for (int k = 0; k < 8; ++k)
+    sorted[k] = decoded(bestBase, bestMultiplier, modifiers[kEacAscending[k]]);
   std::uint64_t word = std::uint64_t(bestBase) << 56 | std::uint64_t(bestMultiplier) << 52 |
                        std::uint64_t(bestTable) << 48;
   for (int x = 0; x < 4; ++x) {
-    for (int y = 0; y < 4; ++y)
-      word |= std::uint64_t(bestIndices[y * 4 + x]) << (45 - 3 * (x * 4 + y));
+    for (int y = 0; y < 4; ++y) {
+      const float value = target[y * 4 + x];
+      int rank = 0;
+      for (int k = 0; k < 7; ++k)
+        rank += value > 0.5f * (sorted[k] + sorted[k + 1]) ? 1 : 0;
+      word |= std::uint64_t(kEacAscending[rank]) << (45 - 3 * (x * 4 + y));
+    }
   }
   writeBigEndian(word, out);
 }
