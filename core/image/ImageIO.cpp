@@ -6,6 +6,7 @@
 #include "core/base/ThirdPartyAllocationScope.h"
 #include "core/image/ExrPreflight.h"
 #include "core/image/ImageFileTypes.h"
+#include "core/image/PngPreflight.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -131,9 +132,14 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
                      ": a compressed texture (DDS or KTX2), not an image file; it is read "
                      "by Relief's texture reader (relief-cli decode, or as a map)");
   }
+  // Header checks before a library allocates what a damaged header claims.
   if (sniffed.reader == "openexr") {
     if (Status header = preflightExr(path, readable.value()); !header)
       return makeError(header.error());
+  }
+  if (sniffed.reader == "png") {
+    if (Status chunks = preflightPng(path, readable.value()); !chunks)
+      return makeError(chunks.error());
   }
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(sniffed.reader);
   if (!input) {

@@ -357,6 +357,11 @@ void writeImages(CorpusWriter& w) {
   garbageIdat.replace(idat + 4, 8, noise(8, 7));
   fixPngCrc(garbageIdat, idat, __builtin_bswap32(idatLength));
   w.file(k, "zlib.png", garbageIdat, "IDAT that is not zlib data (CRC correct)");
+  // Found by the fuzzer: libpng allocated a text chunk's claimed length (1.7 GB) first.
+  Bytes bigText = png.substr(0, 33);
+  put32be(bigText, 33, 0x696c6573u);
+  bigText += "tEXtSoftware" + Bytes(200, 'x') + png.substr(33);
+  w.file(k, "textlength.png", bigText, "a tEXt chunk that claims 1.7 GB");
   Bytes longIdat = png;
   put32be(longIdat, idat - 4, 0x7fffffffu);
   w.file(k, "idatlength.png", longIdat, "an IDAT length of 2^31-1");
