@@ -1,11 +1,17 @@
 #include "core/image/PngPreflight.h"
 
+#include <algorithm>
 #include <fstream>
 
 namespace relief::core::inline image {
 
 Status preflightPng(const std::string& path, std::uintmax_t fileBytes) {
   std::ifstream file(path, std::ios::binary);
+  // Only files with PNG's signature have chunks; for others the PNG reader says what they are.
+  static const char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
+  char signature[8] = {};
+  if (!file.read(signature, 8) || !std::equal(signature, signature + 8, kSignature))
+    return {};
   // Chunk headers only: eight bytes each, then a seek past the data and its CRC.
   std::uintmax_t at = 8;  // after the signature
   while (at + 8 <= fileBytes) {
@@ -22,7 +28,7 @@ Status preflightPng(const std::string& path, std::uintmax_t fileBytes) {
     }
     const std::uintmax_t after = fileBytes - (at + 8);
     if (length > 0x7fffffffu || std::uintmax_t(length) + 4 > after) {
-      return makeError(path + ": a damaged or cut short PNG: chunk \"" + type + "\" at byte " +
+      return makeError(path + ": the PNG is truncated or damaged: chunk \"" + type + "\" at byte " +
                        std::to_string(at) + " claims " + std::to_string(length) +
                        " bytes; the file has " + std::to_string(after) + " after its header");
     }
