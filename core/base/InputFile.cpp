@@ -22,8 +22,7 @@ std::string whatItIs(mode_t mode) {
   return "not a regular file";
 }
 
-}  // namespace
-
+// "16 MiB", "2 GiB", "512 bytes": sizes in messages.
 std::string describeBytes(std::uintmax_t bytes) {
   constexpr std::uintmax_t kMiB = std::uintmax_t(1) << 20;
   constexpr std::uintmax_t kGiB = std::uintmax_t(1) << 30;
@@ -33,6 +32,8 @@ std::string describeBytes(std::uintmax_t bytes) {
     return std::to_string(bytes / kMiB) + " MiB";
   return std::to_string(bytes) + " bytes";
 }
+
+}  // namespace
 
 Result<std::uintmax_t> checkInputFile(const std::string& path, std::uintmax_t maxBytes,
                                       const std::string& kind) {

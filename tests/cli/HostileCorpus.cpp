@@ -159,11 +159,17 @@ Bytes le32(std::uint32_t v) {
   return b;
 }
 
-// ---- DDS: "DDS ", the 124-byte header, then (FourCC "DX10") a 20-byte DX10 header.
-Bytes ddsWith(Bytes b, std::size_t at, std::uint32_t value) {
+// A copy with one little-endian field changed (DDS and KTX2 headers).
+Bytes with32(Bytes b, std::size_t at, std::uint32_t value) {
   put32(b, at, value);
   return b;
 }
+Bytes with64(Bytes b, std::size_t at, std::uint64_t value) {
+  put64(b, at, value);
+  return b;
+}
+
+// ---- DDS: "DDS ", the 124-byte header, then (FourCC "DX10") a 20-byte DX10 header.
 enum DdsField : std::size_t {
   kDdsSize = 4,
   kDdsHeight = 12,
@@ -208,14 +214,6 @@ enum Ktx2Field : std::size_t {
   kLevel0Offset = 80,
   kLevel0Length = 88,
 };
-Bytes ktx2With(Bytes b, std::size_t at, std::uint32_t value) {
-  put32(b, at, value);
-  return b;
-}
-Bytes ktx2With64(Bytes b, std::size_t at, std::uint64_t value) {
-  put64(b, at, value);
-  return b;
-}
 
 Bytes presetJson(const std::string& body) {
   return R"({"format": "relief-material", )" + body + "}";
@@ -446,26 +444,26 @@ void writeTextures(CorpusWriter& w) {
   Bytes magic = dds;
   magic[0] = 'X';
   w.file(k, "magic.dds", magic, "no DDS magic");
-  w.file(k, "headersize.dds", ddsWith(dds, kDdsSize, 0), "header size 0");
-  w.file(k, "pfsize.dds", ddsWith(dds, kDdsPixelFormatSize, 0), "pixel format size 0");
-  w.file(k, "width0.dds", ddsWith(dds, kDdsWidth, 0), "width 0");
-  w.file(k, "height0.dds", ddsWith(dds, kDdsHeight, 0), "height 0");
-  w.file(k, "width16385.dds", ddsWith(dds, kDdsWidth, 16385), "width 16385 (over the limit)");
-  w.file(k, "widthmax.dds", ddsWith(dds, kDdsWidth, 0xffffffffu), "width 2^32-1");
-  w.file(k, "height2g.dds", ddsWith(dds, kDdsHeight, 0x80000000u), "height 2^31");
-  w.file(k, "mips40.dds", ddsWith(dds, kDdsMips, 40), "40 mip levels for 8x8");
-  w.file(k, "mipsmax.dds", ddsWith(dds, kDdsMips, 0xffffffffu), "2^32-1 mip levels");
+  w.file(k, "headersize.dds", with32(dds, kDdsSize, 0), "header size 0");
+  w.file(k, "pfsize.dds", with32(dds, kDdsPixelFormatSize, 0), "pixel format size 0");
+  w.file(k, "width0.dds", with32(dds, kDdsWidth, 0), "width 0");
+  w.file(k, "height0.dds", with32(dds, kDdsHeight, 0), "height 0");
+  w.file(k, "width16385.dds", with32(dds, kDdsWidth, 16385), "width 16385 (over the limit)");
+  w.file(k, "widthmax.dds", with32(dds, kDdsWidth, 0xffffffffu), "width 2^32-1");
+  w.file(k, "height2g.dds", with32(dds, kDdsHeight, 0x80000000u), "height 2^31");
+  w.file(k, "mips40.dds", with32(dds, kDdsMips, 40), "40 mip levels for 8x8");
+  w.file(k, "mipsmax.dds", with32(dds, kDdsMips, 0xffffffffu), "2^32-1 mip levels");
   Bytes fourcc = dds;
   std::memcpy(fourcc.data() + kDdsFourCC, "ABCD", 4);
   w.file(k, "fourcc.dds", fourcc, "FourCC ABCD");
-  Bytes uncompressed = ddsWith(ddsWith(dds, kDdsPixelFlags, 0x40), kDdsBitCount, 0);
+  Bytes uncompressed = with32(with32(dds, kDdsPixelFlags, 0x40), kDdsBitCount, 0);
   put32(uncompressed, kDdsFourCC, 0);
   w.file(k, "uncompressed.dds", uncompressed, "uncompressed, bit count 0");
-  Bytes rgba = ddsWith(ddsWith(dds, kDdsPixelFlags, 0x41), kDdsBitCount, 32);
+  Bytes rgba = with32(with32(dds, kDdsPixelFlags, 0x41), kDdsBitCount, 32);
   put32(rgba, kDdsFourCC, 0);
   w.file(k, "rgba32.dds", rgba, "uncompressed 32-bit RGBA (not a block format)");
-  w.file(k, "cube.dds", ddsWith(dds, kDdsCaps2, 0xfe00) + Bytes(5 * 32, 'x'), "a cube map");
-  w.file(k, "volume.dds", ddsWith(ddsWith(dds, kDdsCaps2, 0x200000), kDdsDepth, 4) + Bytes(96, 'x'),
+  w.file(k, "cube.dds", with32(dds, kDdsCaps2, 0xfe00) + Bytes(5 * 32, 'x'), "a cube map");
+  w.file(k, "volume.dds", with32(with32(dds, kDdsCaps2, 0x200000), kDdsDepth, 4) + Bytes(96, 'x'),
          "a volume of depth 4");
   w.file(k, "dx10format0.dds", ddsDx10(dds, 0, 0), "DX10 header with DXGI format 0");
   w.file(k, "dx10format.dds", ddsDx10(dds, 0, 9999), "DX10 header with DXGI format 9999");
@@ -474,7 +472,7 @@ void writeTextures(CorpusWriter& w) {
   w.file(k, "dx10volume.dds", ddsDx10(dds, 4, 4), "DX10 resource dimension 3D");
   w.file(k, "dx10cube.dds", ddsDx10(dds, 8, 4), "DX10 cube flag");
   w.file(k, "dx10cut.dds", ddsDx10(dds, 0, 71).substr(0, 136), "DX10 header cut short");
-  Bytes huge = ddsWith(ddsWith(dds, kDdsWidth, 32768), kDdsHeight, 32768);
+  Bytes huge = with32(with32(dds, kDdsWidth, 32768), kDdsHeight, 32768);
   w.sparse(k, "huge32k.dds", huge, 128 + std::uintmax_t(32768) * 32768 / 2,
            "32768x32768 BC1 (legal DDS, over Relief's limit)");
 
@@ -487,29 +485,29 @@ void writeTextures(CorpusWriter& w) {
   Bytes identifier = ktx;
   identifier[1] = 'Q';
   w.file(k, "identifier.ktx2", identifier, "a damaged KTX2 identifier");
-  w.file(k, "vkformat0.ktx2", ktx2With(ktx, kVkFormat, 0), "vkFormat 0 (undefined)");
-  w.file(k, "vkformat.ktx2", ktx2With(ktx, kVkFormat, 9999), "vkFormat 9999");
-  w.file(k, "width0.ktx2", ktx2With(ktx, kPixelWidth, 0), "pixelWidth 0");
-  w.file(k, "width16385.ktx2", ktx2With(ktx, kPixelWidth, 16385), "pixelWidth 16385");
-  w.file(k, "widthmax.ktx2", ktx2With(ktx, kPixelWidth, 0xffffffffu), "pixelWidth 2^32-1");
-  w.file(k, "height0.ktx2", ktx2With(ktx, kPixelHeight, 0), "pixelHeight 0 (a 1D texture)");
-  w.file(k, "depth4.ktx2", ktx2With(ktx, kPixelDepth, 4), "pixelDepth 4 (a volume)");
-  w.file(k, "layers3.ktx2", ktx2With(ktx, kLayerCount, 3), "an array of 3 layers");
-  w.file(k, "faces6.ktx2", ktx2With(ktx, kFaceCount, 6), "6 faces (a cube map)");
-  w.file(k, "levels100.ktx2", ktx2With(ktx, kLevelCount, 100), "100 levels");
-  w.file(k, "zstd.ktx2", ktx2With(ktx, kSupercompression, 2),
+  w.file(k, "vkformat0.ktx2", with32(ktx, kVkFormat, 0), "vkFormat 0 (undefined)");
+  w.file(k, "vkformat.ktx2", with32(ktx, kVkFormat, 9999), "vkFormat 9999");
+  w.file(k, "width0.ktx2", with32(ktx, kPixelWidth, 0), "pixelWidth 0");
+  w.file(k, "width16385.ktx2", with32(ktx, kPixelWidth, 16385), "pixelWidth 16385");
+  w.file(k, "widthmax.ktx2", with32(ktx, kPixelWidth, 0xffffffffu), "pixelWidth 2^32-1");
+  w.file(k, "height0.ktx2", with32(ktx, kPixelHeight, 0), "pixelHeight 0 (a 1D texture)");
+  w.file(k, "depth4.ktx2", with32(ktx, kPixelDepth, 4), "pixelDepth 4 (a volume)");
+  w.file(k, "layers3.ktx2", with32(ktx, kLayerCount, 3), "an array of 3 layers");
+  w.file(k, "faces6.ktx2", with32(ktx, kFaceCount, 6), "6 faces (a cube map)");
+  w.file(k, "levels100.ktx2", with32(ktx, kLevelCount, 100), "100 levels");
+  w.file(k, "zstd.ktx2", with32(ktx, kSupercompression, 2),
          "Zstandard supercompression flag on uncompressed levels");
-  w.file(k, "scheme99.ktx2", ktx2With(ktx, kSupercompression, 99), "supercompression scheme 99");
-  w.file(k, "leveloffset.ktx2", ktx2With64(ktx, kLevel0Offset, 0x7ffffffff0ull),
+  w.file(k, "scheme99.ktx2", with32(ktx, kSupercompression, 99), "supercompression scheme 99");
+  w.file(k, "leveloffset.ktx2", with64(ktx, kLevel0Offset, 0x7ffffffff0ull),
          "level 0 past the end of the file");
-  w.file(k, "levellength.ktx2", ktx2With64(ktx, kLevel0Length, 0x8000000000000000ull),
+  w.file(k, "levellength.ktx2", with64(ktx, kLevel0Length, 0x8000000000000000ull),
          "level 0 of 2^63 bytes");
-  w.file(k, "leveloverflow.ktx2", ktx2With64(ktx, kLevel0Offset, 0xfffffffffffffff8ull),
+  w.file(k, "leveloverflow.ktx2", with64(ktx, kLevel0Offset, 0xfffffffffffffff8ull),
          "level 0 offset + length overflows 64 bits");
-  w.file(k, "dfdoffset.ktx2", ktx2With(ktx, kDfdOffset, 0x7ffffff0u), "DFD past the end");
-  w.file(k, "kvdlength.ktx2", ktx2With(ktx2With(ktx, kKvdOffset, 100), kKvdLength, 0xfffffff0u),
+  w.file(k, "dfdoffset.ktx2", with32(ktx, kDfdOffset, 0x7ffffff0u), "DFD past the end");
+  w.file(k, "kvdlength.ktx2", with32(with32(ktx, kKvdOffset, 100), kKvdLength, 0xfffffff0u),
          "4 GiB of key/value data");
-  w.file(k, "sgdlength.ktx2", ktx2With64(ktx, kSgdLength, 0xfffffffffffffff0ull),
+  w.file(k, "sgdlength.ktx2", with64(ktx, kSgdLength, 0xfffffffffffffff0ull),
          "2^64 bytes of supercompression data");
 
   // Zstandard-supercompressed levels: a damaged frame, and an inflated size that is a lie.
@@ -517,7 +515,7 @@ void writeTextures(CorpusWriter& w) {
   Bytes damagedFrame = zstd;
   damagedFrame[std::size_t(get32(zstd, kLevel0Offset)) + 5] ^= 0x5a;
   w.file(k, "zstdframe.ktx2", damagedFrame, "a damaged Zstandard frame in level 0");
-  w.file(k, "zstdsize.ktx2", ktx2With64(zstd, kLevel0Length + 8, 0x10000000000ull),
+  w.file(k, "zstdsize.ktx2", with64(zstd, kLevel0Length + 8, 0x10000000000ull),
          "level 0 claims to inflate to 1 TiB");
   w.file(k, "empty.dds", "", "an empty file");
   w.file(k, "empty.ktx2", "", "an empty file");

@@ -5,6 +5,7 @@
 //
 // Quality: PSNR (dB) for colour, mean angular error (degrees) for normals, PSNR for height.
 // Run: build/release/tools/bench-compress [--quick]   (--quick skips quality "best")
+#include "core/compression/BlockCodecs.h"
 #include "core/compression/CompressionMetrics.h"
 #include "core/compression/Compressor.h"
 #include "core/generators/ImageFilters.h"
@@ -117,17 +118,9 @@ void benchSquishReference(const core::Image& colour) {
 // candidates, each texel at its nearest value) on a sample of the map's blocks, which is the
 // best any EAC encoder can do for those blocks. The ratio of mean squared errors says what the
 // fast search gives away. Texel values in R11 units (0..2047).
-constexpr int kEacTables[16][8] = {
-    {-3, -6, -9, -15, 2, 5, 8, 14}, {-3, -7, -10, -13, 2, 6, 9, 12}, {-2, -5, -8, -13, 1, 4, 7, 12},
-    {-2, -4, -6, -13, 1, 3, 5, 12}, {-3, -6, -8, -12, 2, 5, 7, 11},  {-3, -7, -9, -11, 2, 6, 8, 10},
-    {-4, -7, -8, -11, 3, 6, 7, 10}, {-3, -5, -8, -11, 2, 4, 7, 10},  {-2, -6, -8, -10, 1, 5, 7, 9},
-    {-2, -5, -8, -10, 1, 4, 7, 9},  {-2, -4, -8, -10, 1, 3, 7, 9},   {-2, -5, -7, -10, 1, 4, 6, 9},
-    {-3, -4, -7, -10, 2, 3, 6, 9},  {-1, -2, -3, -10, 0, 1, 2, 9},   {-4, -6, -8, -9, 3, 5, 7, 8},
-    {-3, -5, -7, -9, 2, 4, 6, 8}};
-
 double exhaustiveEacError(const double target[16]) {
   double best = 1e300;
-  for (const auto& table : kEacTables) {
+  for (const auto& table : core::kEacModifiers) {
     for (int multiplier = 0; multiplier < 16; ++multiplier) {
       for (int base = 0; base < 256; ++base) {
         double error = 0.0;
@@ -155,21 +148,17 @@ void benchEacAgainstExhaustive(const core::Image& height, core::CompressionQuali
     // Blocks spread over the map (a fixed stride), so flat and busy ones are both sampled.
     const int block = int((std::uint64_t(i) * 2654435761u) % std::uint64_t(blocksX * blocksY));
     const int bx = block % blocksX * 4, by = block / blocksX * 4;
-    core::Image tile(4, 4, 1);
+    float values[16], decoded[16];
     double target[16];
-    for (int y = 0; y < 4; ++y) {
-      for (int x = 0; x < 4; ++x) {
-        tile.at(x, y, 0) = height.at(bx + x, by + y, 0);
-        target[y * 4 + x] = std::clamp(double(tile.at(x, y, 0)), 0.0, 1.0) * 2047.0;
-      }
-    }
-    const core::CompressedTexture texture =
-        core::compressMap(tile, core::MapSlot::Height,
-                          {core::TextureFormat::EacR11, quality, false})
-            .value();
-    const core::Image decoded = core::decodeLevel(texture).value();
     for (int t = 0; t < 16; ++t) {
-      const double d = double(decoded.at(t % 4, t / 4, 0)) * 2047.0 - target[t];
+      values[t] = height.at(bx + t % 4, by + t / 4, 0);
+      target[t] = std::clamp(double(values[t]), 0.0, 1.0) * 2047.0;
+    }
+    std::uint8_t encoded[8];
+    core::encodeEacChannel(values, 0xffff, true, quality, encoded);
+    core::decodeEacChannel(encoded, true, decoded);
+    for (int t = 0; t < 16; ++t) {
+      const double d = double(decoded[t]) * 2047.0 - target[t];
       ours += d * d;
     }
     exhaustive += exhaustiveEacError(target);
