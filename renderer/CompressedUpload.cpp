@@ -25,6 +25,8 @@ std::string formatRequirement(core::TextureFormat format) {
       return "GL_EXT_texture_compression_s3tc";
     case core::GpuFeature::Rgtc:
       return "OpenGL 3.0 (RGTC)";
+    case core::GpuFeature::Bptc:
+      return "OpenGL 4.2 or GL_ARB_texture_compression_bptc (BPTC)";
     case core::GpuFeature::Etc2Eac:
       return "OpenGL 4.3 or GL_ARB_ES3_compatibility (ETC2/EAC)";
     case core::GpuFeature::AstcLdr:
@@ -41,6 +43,8 @@ bool gpuSupportsFormat(core::TextureFormat format, bool srgb) {
               hasExtension("GL_EXT_texture_compression_s3tc_srgb"));
     case core::GpuFeature::Rgtc:
       return hasVersion(3, 0) || hasExtension("GL_ARB_texture_compression_rgtc");
+    case core::GpuFeature::Bptc:
+      return hasVersion(4, 2) || hasExtension("GL_ARB_texture_compression_bptc");
     case core::GpuFeature::Etc2Eac:
       return hasVersion(4, 3) || hasExtension("GL_ARB_ES3_compatibility");
     case core::GpuFeature::AstcLdr:

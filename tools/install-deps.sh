@@ -14,8 +14,9 @@ packages=(
   libsquish-dev libastcenc-dev android-libetc1-dev libfftw3-dev libxcb1-dev libzstd-dev
   # tests: GoogleTest, a headless X server with Mesa's software OpenGL, shader validation
   libgtest-dev libgmock-dev xvfb xauth mesa-utils libgl1-mesa-dri glslang-tools
-  # screenshots and independent image readers used while testing
-  imagemagick python3-pil python3-numpy zstd
+  # screenshots and independent image readers used while testing; scikit-image ships the real
+  # photographs the encoder quality tests and benchmarks use
+  imagemagick python3-pil python3-numpy zstd python3-skimage
   # the Khronos glTF validator runs on Node.js (tools/gltf-validator/setup.sh fetches it)
   nodejs
 )
@@ -25,8 +26,8 @@ if ! command -v npm >/dev/null 2>&1; then
 fi
 
 if [ "${1:-}" = "--bench" ]; then
-  # OpenCV for bench-generate; scikit-image ships the real photographs the benchmarks use.
-  packages+=(python3-opencv python3-skimage)
+  # OpenCV for bench-generate.
+  packages+=(python3-opencv)
 fi
 
 missing=()

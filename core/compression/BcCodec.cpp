@@ -3,6 +3,7 @@
 // are RGB 5:6:5 with bit replication, c0 > c1 selects four colours, otherwise three and
 // transparent black (BC2/BC3 colour blocks always use four); BC3 alpha and BC4/BC5 channels
 // interpolate 8 values when a0 > a1, else 6 plus 0 and 1.
+#include "core/compression/Bc7Block.h"
 #include "core/compression/BlockCodecs.h"
 
 #include <squish.h>
@@ -212,6 +213,10 @@ void encodeChannelBlock(const float values[16], int validMask, CompressionQualit
 
 void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool perceptual,
                    const BlockTexels& texels, int validMask, std::uint8_t* out) {
+  if (format == TextureFormat::Bc7) {
+    encodeBc7Block(quality, texels, validMask, out);
+    return;
+  }
   if (format == TextureFormat::Bc4 || format == TextureFormat::Bc5) {
     float values[16];
     for (int ch = 0; ch < (format == TextureFormat::Bc5 ? 2 : 1); ++ch) {
@@ -287,6 +292,15 @@ void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& te
         texels[t][3] = 1.0f;
       }
       return;
+    case TextureFormat::Bc7: {
+      std::uint8_t rgba[16][4];
+      decodeBc7Block(in, rgba);
+      for (int t = 0; t < 16; ++t) {
+        for (int ch = 0; ch < 4; ++ch)
+          texels[t][ch] = float(rgba[t][ch]) / 255.0f;
+      }
+      return;
+    }
     default:
       return;
   }

@@ -21,6 +21,11 @@ void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool percep
                    const BlockTexels& texels, int validMask, std::uint8_t* out);
 void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels);
 
+// BC7: our own encoder (Bc7Encoder.cpp; no Debian package has one) and decoder (Bc7Block.h).
+// encodeBcBlock and decodeBcBlock dispatch BC7 here too.
+void encodeBc7Block(CompressionQuality quality, const BlockTexels& texels, int validMask,
+                    std::uint8_t* out);
+
 // ETC1 (android-libetc1; also a valid ETC2 RGB block), ETC2 RGBA (ETC1 colour with our EAC
 // alpha), EAC R11 and RG11 (our encoder). Decoding covers every ETC2 mode (individual,
 // differential, T, H, planar), so files from other encoders decode too.

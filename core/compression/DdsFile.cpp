@@ -21,21 +21,21 @@ constexpr std::uint32_t kFourCCFlag = 0x4, kNormalFlag = 0x80000000u;
 // dwCaps.
 constexpr std::uint32_t kCapsComplex = 0x8, kCapsTexture = 0x1000, kCapsMipMap = 0x400000;
 
-struct DxgiCode {
-  std::uint32_t code;
-  TextureFormat format;
-  bool srgb;
-};
-// DXGI_FORMAT values of the BC formats (typeless, UNORM and UNORM_SRGB).
-constexpr DxgiCode kDxgiCodes[] = {
-    {70, TextureFormat::Bc1, false}, {71, TextureFormat::Bc1, false},
-    {72, TextureFormat::Bc1, true},  {73, TextureFormat::Bc2, false},
-    {74, TextureFormat::Bc2, false}, {75, TextureFormat::Bc2, true},
-    {76, TextureFormat::Bc3, false}, {77, TextureFormat::Bc3, false},
-    {78, TextureFormat::Bc3, true},  {79, TextureFormat::Bc4, false},
-    {80, TextureFormat::Bc4, false}, {82, TextureFormat::Bc5, false},
-    {83, TextureFormat::Bc5, false},
-};
+// The format a DXGI_FORMAT code names: the table's UNORM and sRGB codes, and the TYPELESS code
+// that precedes the UNORM one for every BC format (BC1 70, ..., BC7 97). DXT5nm shares BC3's
+// codes, and BC3 comes first in the table.
+std::optional<TextureFormat> formatForDxgi(std::uint32_t code, bool& srgb) {
+  for (const TextureFormatInfo& info : allTextureFormats()) {
+    if (info.dxgiFormat == 0)
+      continue;
+    if (code == info.dxgiFormat || code == info.dxgiFormat - 1 ||
+        (info.srgbDxgiFormat != 0 && code == info.srgbDxgiFormat)) {
+      srgb = code == info.srgbDxgiFormat;
+      return info.format;
+    }
+  }
+  return std::nullopt;
+}
 
 std::optional<TextureFormat> formatForFourCC(std::uint32_t fourCC, bool normalFlag) {
   switch (fourCC) {
@@ -89,12 +89,23 @@ Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture) {
   out.u32(0);                                // depth
   out.u32(std::uint32_t(texture.levels.size()));
   out.zeros(11 * 4);  // reserved
+  // Formats without a legacy FourCC (BC7) take the DX10 header, which also says sRGB.
+  const bool dx10 = info.fourCC == 0;
   out.u32(kPixelFormatSize);
   out.u32(kFourCCFlag | (texture.format == TextureFormat::Dxt5nm ? kNormalFlag : 0));
-  out.u32(info.fourCC);
+  out.u32(dx10 ? makeFourCC('D', 'X', '1', '0') : info.fourCC);
   out.zeros(5 * 4);  // bit count and masks: unused with a FourCC
   out.u32(kCapsTexture | (mips ? kCapsComplex | kCapsMipMap : 0));
   out.zeros(4 * 4);  // caps2, caps3, caps4, reserved2
+  if (dx10) {
+    // DDS_HEADER_DXT10: format, D3D10_RESOURCE_DIMENSION_TEXTURE2D, no flags, one texture, and
+    // alpha mode 0 (unknown: straight alpha, as every reader assumes).
+    out.u32(texture.srgb && info.srgbDxgiFormat != 0 ? info.srgbDxgiFormat : info.dxgiFormat);
+    out.u32(3);
+    out.u32(0);
+    out.u32(1);
+    out.u32(0);
+  }
   for (const CompressedLevel& level : texture.levels)
     out.bytes(level.data.data(), level.data.size());
   return std::move(out.data());
@@ -143,14 +154,11 @@ Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
     in.skip(4);
     if (!in.ok())
       return fail("the DX10 header is cut short");
-    for (const DxgiCode& code : kDxgiCodes) {
-      if (code.code == dxgi) {
-        format = code.format;
-        srgb = code.srgb;
-      }
+    format = formatForDxgi(dxgi, srgb);
+    if (!format) {
+      return fail("DXGI format " + std::to_string(dxgi) +
+                  " is not one Relief reads (BC1-BC5, BC7)");
     }
-    if (!format)
-      return fail("DXGI format " + std::to_string(dxgi) + " is not one Relief reads (BC1-BC5)");
     constexpr std::uint32_t kTextureCube = 0x4;
     // arraySize 0 is no texture at all (DDS_HEADER_DXT10: "must be at least 1").
     if (dimension != 3 || arraySize != 1 || (miscFlag & kTextureCube))

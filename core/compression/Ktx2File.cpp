@@ -28,7 +28,7 @@ constexpr std::size_t kHeaderEnd = 12 + 9 * 4 + 4 * 4 + 2 * 8;  // identifier, h
 
 // Khronos Data Format colour models, channel ids and transfer functions.
 constexpr std::uint32_t kModelBc1 = 128, kModelBc2 = 129, kModelBc3 = 130, kModelBc4 = 131,
-                        kModelBc5 = 132, kModelEtc2 = 161, kModelAstc = 162;
+                        kModelBc5 = 132, kModelBc7 = 134, kModelEtc2 = 161, kModelAstc = 162;
 constexpr std::uint32_t kChannelColorBc = 0, kChannelRed = 0, kChannelGreen = 1,
                         kChannelEtc2Color = 2, kChannelAlpha = 15;
 constexpr std::uint32_t kPrimariesBt709 = 1, kTransferLinear = 1, kTransferSrgb = 2;
@@ -74,6 +74,8 @@ std::uint32_t colourModel(TextureFormat format) {
       return kModelBc4;
     case TextureFormat::Bc5:
       return kModelBc5;
+    case TextureFormat::Bc7:
+      return kModelBc7;
     case TextureFormat::Astc4x4:
     case TextureFormat::Astc5x5:
     case TextureFormat::Astc6x6:
@@ -98,7 +100,7 @@ std::vector<Sample> samples(TextureFormat format) {
       return {{kChannelEtc2Color, 0}};
     case TextureFormat::Etc2A:
       return {{kChannelAlpha, 0}, {kChannelEtc2Color, 64}};
-    default:  // BC1 (colour), BC4 and EAC R11 (red), ASTC (data): one sample over the block
+    default:  // BC1, BC7 (colour), BC4 and EAC R11 (red), ASTC (data): one sample over the block
       return {{0, 0}};
   }
 }
@@ -106,7 +108,9 @@ std::vector<Sample> samples(TextureFormat format) {
 std::vector<std::uint8_t> dataFormatDescriptor(const CompressedTexture& texture) {
   const TextureFormatInfo& info = textureFormatInfo(texture.format);
   const std::vector<Sample> blockSamples = samples(texture.format);
-  const std::uint32_t sampleBits = isAstc(texture.format) ? 128 : 64;
+  // One sample spans a whole 128-bit ASTC or BC7 block; the others pair 64-bit halves.
+  const std::uint32_t sampleBits =
+      isAstc(texture.format) || texture.format == TextureFormat::Bc7 ? 128 : 64;
   const std::uint32_t blockSize = 24 + 16 * std::uint32_t(blockSamples.size());
   ByteWriter out;
   out.u32(4 + blockSize);        // dfdTotalSize

@@ -50,8 +50,9 @@ std::string textureExtentProblem(std::uint32_t width, std::uint32_t height, std:
 }
 
 bool containerHolds(TextureContainer container, TextureFormat format) {
-  // DDS by the format table's FourCC column: the formats readers open in a legacy DDS.
-  return container == TextureContainer::Ktx2 || textureFormatInfo(format).fourCC != 0;
+  // DDS by the format table's FourCC and DXGI columns: a legacy FourCC, or the DX10 header.
+  const TextureFormatInfo& info = textureFormatInfo(format);
+  return container == TextureContainer::Ktx2 || info.fourCC != 0 || info.dxgiFormat != 0;
 }
 
 TextureContainer containerFor(TextureFormat format, bool preferDds) {

@@ -1,8 +1,9 @@
 // Compressed textures in files: DDS (DirectDraw Surface) and KTX2 (Khronos KTX 2.0).
 //
 // DDS is written with the legacy FourCC codes every reader knows (DXT1, DXT3, DXT5, ATI1,
-// ATI2; DXT5nm is DXT5 with the DDPF_NORMAL flag NVIDIA's tools set), so it holds the BC
-// formats only; files with the DX10 header and DXGI BC1-BC5 codes are read too. KTX2 holds
+// ATI2; DXT5nm is DXT5 with the DDPF_NORMAL flag NVIDIA's tools set) where a format has one,
+// and with the DX10 header and its DXGI code otherwise (BC7: 98, sRGB 99), so it holds the BC
+// formats only; files with the DX10 header and DXGI BC1-BC5 and BC7 codes are read too. KTX2 holds
 // every format by its vkFormat, with a Data Format Descriptor and the mip levels stored smallest
 // first, as the KTX 2.0 specification requires.
 //
@@ -45,8 +46,7 @@ const TextureContainerInfo& textureContainerInfo(TextureContainer container);
 // From the extension (.dds, .ktx2), case-insensitive.
 std::optional<TextureContainer> containerForPath(const std::string& path);
 
-// Whether a container can hold a format: KTX2 holds every format; DDS the BC family, written
-// with the legacy FourCC codes common readers open.
+// Whether a container can hold a format: KTX2 holds every format; DDS the BC family.
 bool containerHolds(TextureContainer container, TextureFormat format);
 // The container a format is written in when the user prefers DDS where it can hold it.
 TextureContainer containerFor(TextureFormat format, bool preferDds);

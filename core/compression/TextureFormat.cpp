@@ -1,7 +1,8 @@
 // TextureFormat; see TextureFormat.h. Codes: vkFormat from the Vulkan specification (as KTX2
 // uses them), FourCC as DirectX 9 readers know them, GL enums from EXT_texture_compression_s3tc,
 // EXT_texture_sRGB, ARB_texture_compression_rgtc, ARB_ES3_compatibility, KHR_texture_compression_
-// astc_ldr and OES_compressed_ETC1_RGB8_texture.
+// astc_ldr, ARB_texture_compression_bptc and OES_compressed_ETC1_RGB8_texture; DXGI_FORMAT
+// values from Microsoft's DXGI_FORMAT enumeration.
 #include "core/compression/TextureFormat.h"
 
 #include <array>
@@ -9,37 +10,39 @@
 namespace relief::core::inline compression {
 namespace {
 
-constexpr std::array<TextureFormatInfo, 15> kFormats = {{
+constexpr std::array<TextureFormatInfo, 16> kFormats = {{
     {TextureFormat::Bc1, "bc1", "BC1 (DXT1)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 8,
-     FormatLayout::Rgb, 131, 132, makeFourCC('D', 'X', 'T', '1'), 0x83F0, 0x8C4C},
+     FormatLayout::Rgb, 131, 132, makeFourCC('D', 'X', 'T', '1'), 71, 72, 0x83F0, 0x8C4C},
     {TextureFormat::Bc2, "bc2", "BC2 (DXT3)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 16,
-     FormatLayout::Rgba, 135, 136, makeFourCC('D', 'X', 'T', '3'), 0x83F2, 0x8C4E},
+     FormatLayout::Rgba, 135, 136, makeFourCC('D', 'X', 'T', '3'), 74, 75, 0x83F2, 0x8C4E},
     {TextureFormat::Bc3, "bc3", "BC3 (DXT5)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 16,
-     FormatLayout::Rgba, 137, 138, makeFourCC('D', 'X', 'T', '5'), 0x83F3, 0x8C4F},
+     FormatLayout::Rgba, 137, 138, makeFourCC('D', 'X', 'T', '5'), 77, 78, 0x83F3, 0x8C4F},
     {TextureFormat::Bc4, "bc4", "BC4 (ATI1)", FormatFamily::Bc, GpuFeature::Rgtc, 4, 4, 8,
-     FormatLayout::R, 139, 0, makeFourCC('A', 'T', 'I', '1'), 0x8DBB, 0},
+     FormatLayout::R, 139, 0, makeFourCC('A', 'T', 'I', '1'), 80, 0, 0x8DBB, 0},
     {TextureFormat::Bc5, "bc5", "BC5 (ATI2, 3Dc)", FormatFamily::Bc, GpuFeature::Rgtc, 4, 4, 16,
-     FormatLayout::NormalRg, 141, 0, makeFourCC('A', 'T', 'I', '2'), 0x8DBD, 0},
+     FormatLayout::NormalRg, 141, 0, makeFourCC('A', 'T', 'I', '2'), 83, 0, 0x8DBD, 0},
     {TextureFormat::Dxt5nm, "dxt5nm", "DXT5nm (normal in AG)", FormatFamily::Bc, GpuFeature::S3tc,
-     4, 4, 16, FormatLayout::NormalAg, 137, 0, makeFourCC('D', 'X', 'T', '5'), 0x83F3, 0},
+     4, 4, 16, FormatLayout::NormalAg, 137, 0, makeFourCC('D', 'X', 'T', '5'), 77, 0, 0x83F3, 0},
+    {TextureFormat::Bc7, "bc7", "BC7 (BPTC)", FormatFamily::Bc, GpuFeature::Bptc, 4, 4, 16,
+     FormatLayout::Rgba, 145, 146, 0, 98, 99, 0x8E8C, 0x8E8D},
     {TextureFormat::Etc1, "etc1", "ETC1", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
-     FormatLayout::Rgb, 147, 148, 0, 0x9274, 0x9275},
+     FormatLayout::Rgb, 147, 148, 0, 0, 0, 0x9274, 0x9275},
     {TextureFormat::Etc2, "etc2", "ETC2 RGB", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
-     FormatLayout::Rgb, 147, 148, 0, 0x9274, 0x9275},
+     FormatLayout::Rgb, 147, 148, 0, 0, 0, 0x9274, 0x9275},
     {TextureFormat::Etc2A, "etc2a", "ETC2 RGBA", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 16,
-     FormatLayout::Rgba, 151, 152, 0, 0x9278, 0x9279},
+     FormatLayout::Rgba, 151, 152, 0, 0, 0, 0x9278, 0x9279},
     {TextureFormat::EacR11, "eac-r11", "EAC R11", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
-     FormatLayout::R, 153, 0, 0, 0x9270, 0},
+     FormatLayout::R, 153, 0, 0, 0, 0, 0x9270, 0},
     {TextureFormat::EacRg11, "eac-rg11", "EAC RG11", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4,
-     16, FormatLayout::NormalRg, 155, 0, 0, 0x9272, 0},
+     16, FormatLayout::NormalRg, 155, 0, 0, 0, 0, 0x9272, 0},
     {TextureFormat::Astc4x4, "astc4x4", "ASTC 4x4", FormatFamily::Astc, GpuFeature::AstcLdr, 4, 4,
-     16, FormatLayout::Rgba, 157, 158, 0, 0x93B0, 0x93D0},
+     16, FormatLayout::Rgba, 157, 158, 0, 0, 0, 0x93B0, 0x93D0},
     {TextureFormat::Astc5x5, "astc5x5", "ASTC 5x5", FormatFamily::Astc, GpuFeature::AstcLdr, 5, 5,
-     16, FormatLayout::Rgba, 161, 162, 0, 0x93B2, 0x93D2},
+     16, FormatLayout::Rgba, 161, 162, 0, 0, 0, 0x93B2, 0x93D2},
     {TextureFormat::Astc6x6, "astc6x6", "ASTC 6x6", FormatFamily::Astc, GpuFeature::AstcLdr, 6, 6,
-     16, FormatLayout::Rgba, 165, 166, 0, 0x93B4, 0x93D4},
+     16, FormatLayout::Rgba, 165, 166, 0, 0, 0, 0x93B4, 0x93D4},
     {TextureFormat::Astc8x8, "astc8x8", "ASTC 8x8", FormatFamily::Astc, GpuFeature::AstcLdr, 8, 8,
-     16, FormatLayout::Rgba, 171, 172, 0, 0x93B7, 0x93D7},
+     16, FormatLayout::Rgba, 171, 172, 0, 0, 0, 0x93B7, 0x93D7},
 }};
 
 // textureFormatInfo indexes the table by the enum: each row must sit at its enum's position.

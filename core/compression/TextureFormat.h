@@ -1,6 +1,6 @@
 // The GPU block-compression formats Relief encodes, decodes and writes (reference 003, ch. 2):
-// S3TC/BC1-BC3, RGTC/BC4-BC5 (3Dc), DXT5nm, ETC1/ETC2/EAC and ASTC LDR. One table says, for
-// each, its name, family, block size, what its channels hold, and its codes in the file formats
+// S3TC/BC1-BC3, RGTC/BC4-BC5 (3Dc), DXT5nm, BPTC/BC7, ETC1/ETC2/EAC and ASTC LDR. One table says,
+// for each, its name, family, block size, what its channels hold, and its codes in the file formats
 // and in GL; everything else (the codec dispatch, the containers, the renderer's feature checks,
 // preset parsing) reads these columns. Adding a format is one row here plus its codec.
 #pragma once
@@ -19,6 +19,7 @@ enum class TextureFormat {
   Bc4,      // ATI1/RGTC1: one channel, interpolated like BC3 alpha
   Bc5,      // ATI2/3Dc/RGTC2: two BC4 channels (normal X, Y; Z rebuilt)
   Dxt5nm,   // BC3 with normal X in alpha and Y in green (reference 003's fallback)
+  Bc7,      // BPTC: RGBA in eight block modes with up to three partitioned subsets
   Etc1,     // ETC1: RGB; a valid ETC2 RGB stream
   Etc2,     // ETC2 RGB
   Etc2A,    // ETC2 RGBA: EAC alpha block + ETC2 colour block
@@ -46,7 +47,7 @@ enum class FormatFamily { Bc, Etc, Astc };
 
 // What a GL driver must offer to sample a format natively; the renderer turns it into the
 // extension or version check (renderer/CompressedUpload.cpp).
-enum class GpuFeature { S3tc, Rgtc, Etc2Eac, AstcLdr };
+enum class GpuFeature { S3tc, Rgtc, Bptc, Etc2Eac, AstcLdr };
 
 struct TextureFormatInfo {
   TextureFormat format;
@@ -64,6 +65,10 @@ struct TextureFormatInfo {
   // DDS legacy FourCC, 0 when the format has no DDS representation that common readers open
   // (then only KTX2 holds it: containerHolds in TextureFile.h).
   std::uint32_t fourCC;
+  // DXGI_FORMAT of the DDS DX10 header (UNORM; the sRGB one, 0 when none); 0 when DirectX has
+  // no such format. Formats without a FourCC are written with the DX10 header.
+  std::uint32_t dxgiFormat;
+  std::uint32_t srgbDxgiFormat;
   // OpenGL internal formats (sRGB 0 when none).
   std::uint32_t glFormat;
   std::uint32_t glSrgbFormat;

@@ -435,7 +435,7 @@ void writeImages(CorpusWriter& w) {
 
 void writeTextures(CorpusWriter& w) {
   const HostileKind k = HostileKind::Texture;
-  for (const std::string name : {"bc1.dds", "bc3.dds", "bc5.dds", "dxt5nm.dds"}) {
+  for (const std::string name : {"bc1.dds", "bc3.dds", "bc5.dds", "dxt5nm.dds", "bc7.dds"}) {
     const Bytes bytes = seed("dds", name);
     w.file(k, "half-" + name, half(bytes), "cut at half its length");
     w.file(k, "header-" + name, bytes.substr(0, 100), "cut inside the header");
@@ -476,7 +476,8 @@ void writeTextures(CorpusWriter& w) {
   w.sparse(k, "huge32k.dds", huge, 128 + std::uintmax_t(32768) * 32768 / 2,
            "32768x32768 BC1 (legal DDS, over Relief's limit)");
 
-  for (const std::string name : {"bc1.ktx2", "etc2.ktx2", "astc4x4.ktx2", "eac-rg11.ktx2"}) {
+  for (const std::string name :
+       {"bc1.ktx2", "etc2.ktx2", "astc4x4.ktx2", "eac-rg11.ktx2", "bc7.ktx2"}) {
     const Bytes bytes = seed("ktx2", name);
     w.file(k, "half-" + name, half(bytes), "cut at half its length");
     w.file(k, "header-" + name, bytes.substr(0, 60), "cut inside the header");

@@ -83,7 +83,14 @@ TEST(TextureFormatTest, RatesAndCodesMatchTheSpecifications) {
   EXPECT_EQ(textureFormatInfo(TextureFormat::Astc8x8).vkFormat, 171u);
   for (const TextureFormatInfo& info : allTextureFormats())
     EXPECT_EQ(findTextureFormat(info.name), info.format) << info.name;
-  EXPECT_FALSE(findTextureFormat("bc7").has_value());
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc7).vkFormat, 145u);  // BC7_UNORM_BLOCK
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc7).srgbVkFormat, 146u);
+  // DXGI_FORMAT_BC7_UNORM, _UNORM_SRGB; GL_COMPRESSED_RGBA_BPTC_UNORM.
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc7).dxgiFormat, 98u);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc7).srgbDxgiFormat, 99u);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc7).glFormat, 0x8E8Cu);
+  EXPECT_DOUBLE_EQ(bitsPerPixel(TextureFormat::Bc7), 8.0);
+  EXPECT_FALSE(findTextureFormat("bc6h").has_value());
 }
 
 TEST(TextureFormatTest, SlotsGetTheFormatsThatCanHoldThem) {

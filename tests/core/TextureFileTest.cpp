@@ -98,6 +98,30 @@ TEST(DdsFileTest, HeaderUsesTheLegacyFourCCAndRoundTrips) {
   EXPECT_NE(etc.error().find(".ktx2"), std::string::npos);
 }
 
+// BC7 has no legacy FourCC: "DX10" and DDS_HEADER_DXT10 with DXGI_FORMAT_BC7_UNORM (98) or
+// _UNORM_SRGB (99), TEXTURE2D (3), no flags, array size 1 (Microsoft's DDS_HEADER_DXT10).
+TEST(DdsFileTest, Bc7IsWrittenWithTheDx10Header) {
+  for (const bool srgb : {false, true}) {
+    CompressedTexture texture = compressed(TextureFormat::Bc7);
+    texture.srgb = srgb;
+    const std::vector<std::uint8_t> bytes = encodeDds(texture).value();
+    EXPECT_EQ(u32At(bytes, 80), 0x4u);  // DDPF_FOURCC
+    EXPECT_EQ(u32At(bytes, 84), makeFourCC('D', 'X', '1', '0'));
+    EXPECT_EQ(u32At(bytes, 128), srgb ? 99u : 98u);
+    EXPECT_EQ(u32At(bytes, 132), 3u);
+    EXPECT_EQ(u32At(bytes, 136), 0u);
+    EXPECT_EQ(u32At(bytes, 140), 1u);
+    EXPECT_EQ(bytes.size(), 148 + texture.byteSize());
+    Result<CompressedTexture> back = decodeDds(bytes, "bc7.dds");
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_EQ(back->format, TextureFormat::Bc7);
+    EXPECT_EQ(back->srgb, srgb);
+    ASSERT_EQ(back->levels.size(), texture.levels.size());
+    for (std::size_t i = 0; i < texture.levels.size(); ++i)
+      EXPECT_EQ(back->levels[i].data, texture.levels[i].data) << "level " << i;
+  }
+}
+
 TEST(DdsFileTest, Dx10HeadersFromOtherToolsAreRead) {
   // The same BC3 blocks behind a DX10 header with DXGI_FORMAT_BC3_UNORM_SRGB (78).
   const CompressedTexture texture = compressed(TextureFormat::Bc3, 8, 8, false);
@@ -136,8 +160,11 @@ float channelOf(const Image& image, int x, int y, int c) {
 TEST(DdsFileTest, OpenImageIOReadsOurFilesWithOurPixels) {
   const std::string folder = test::scratchFolder();
   for (TextureFormat format : {TextureFormat::Bc1, TextureFormat::Bc2, TextureFormat::Bc3,
-                               TextureFormat::Bc4, TextureFormat::Bc5}) {
-    const CompressedTexture texture = compressed(format, 36, 20, true);
+                               TextureFormat::Bc4, TextureFormat::Bc5, TextureFormat::Bc7}) {
+    CompressedTexture texture = compressed(format, 36, 20, true);
+    // OpenImageIO 2.4 refuses sRGB DXGI codes (BC7's DX10 header would say 99); the blocks
+    // are the same either way.
+    texture.srgb = false;
     const std::string path =
         folder + "/oiio-" + std::string(textureFormatInfo(format).name) + ".dds";
     ASSERT_TRUE(saveCompressedTexture(texture, path).ok());
@@ -171,9 +198,10 @@ TEST(DdsFileTest, OpenImageIOReadsOurFilesWithOurPixels) {
 
 TEST(DdsFileTest, PillowReadsOurFilesWithOurPixels) {
   const std::string folder = test::scratchFolder();
-  // Pillow (9.4, Debian 12) reads DXT1, DXT3, DXT5, ATI1 and ATI2.
+  // Pillow (9.4, Debian 12) reads DXT1, DXT3, DXT5, ATI1, ATI2 and DX10 BC7 (its own C
+  // decoder, independent of ours).
   for (TextureFormat format : {TextureFormat::Bc1, TextureFormat::Bc2, TextureFormat::Bc3,
-                               TextureFormat::Bc4, TextureFormat::Bc5}) {
+                               TextureFormat::Bc4, TextureFormat::Bc5, TextureFormat::Bc7}) {
     const CompressedTexture texture = compressed(format, 36, 20, false);
     const std::string name = std::string(textureFormatInfo(format).name);
     const std::string dds = folder + "/pil-" + name + ".dds";
@@ -291,10 +319,12 @@ TEST(Ktx2FileTest, EveryFormatRoundTripsWithItsDescriptor) {
     EXPECT_EQ(back->slot, texture.slot) << info.name;
     EXPECT_EQ(back->levels.size(), texture.levels.size());
     EXPECT_EQ(back->levels.back().data, texture.levels.back().data);
-    // Two planes of 64 bits for the formats that pair two blocks: BC2/BC3, BC5, ETC2 RGBA, RG11.
+    // Two planes of 64 bits for the formats that pair two blocks: BC2/BC3, BC5, ETC2 RGBA, RG11;
+    // ASTC and BC7 blocks are one 128-bit sample.
     const std::uint32_t dfd = u32At(bytes, 48);
     const std::uint32_t samples = ((u32At(bytes, dfd + 8) >> 16) - 24) / 16;
-    EXPECT_EQ(samples, info.bytesPerBlock == 16 && !isAstc(info.format) ? 2u : 1u) << info.name;
+    const bool oneBlock = isAstc(info.format) || info.format == TextureFormat::Bc7;
+    EXPECT_EQ(samples, info.bytesPerBlock == 16 && !oneBlock ? 2u : 1u) << info.name;
     EXPECT_EQ(u32At(bytes, dfd + 20), std::uint32_t(info.bytesPerBlock)) << info.name;
   }
 }

@@ -2,9 +2,11 @@
 // Blocks are uploaded with glCompressedTexImage2D, read back texel by texel with texelFetch into
 // a float framebuffer, and compared with core's decoder within 1/255. Random bytes exercise
 // every block mode a format has (BC1's three-colour mode, BC4's six-value mode, ETC2's T, H and
-// planar modes, every EAC table); ASTC, where random bytes are mostly illegal blocks, uses
-// astcenc's encoding of a real map.
+// planar modes, every EAC table, BC7's eight modes and its reserved one); BC7 blocks built field
+// by field cover every partition, rotation and index selection; ASTC, where random bytes are
+// mostly illegal blocks, uses astcenc's encoding of a real map.
 #include "core/compression/AstcCodec.h"
+#include "core/compression/Bc7Block.h"
 #include "core/compression/Compressor.h"
 #include "core/image/ColorSpace.h"
 #include "core/image/ImageIO.h"
@@ -143,7 +145,8 @@ TEST_F(CompressedSampling, RandomBlocksDecodeAsTheGpuSamplesThem) {
   const std::pair<TextureFormat, int> cases[] = {
       {TextureFormat::Bc1, 3},   {TextureFormat::Bc2, 4},    {TextureFormat::Bc3, 4},
       {TextureFormat::Bc4, 1},   {TextureFormat::Bc5, 2},    {TextureFormat::Etc2, 3},
-      {TextureFormat::Etc2A, 4}, {TextureFormat::EacR11, 1}, {TextureFormat::EacRg11, 2}};
+      {TextureFormat::Etc2A, 4}, {TextureFormat::EacR11, 1}, {TextureFormat::EacRg11, 2},
+      {TextureFormat::Bc7, 4}};
   for (const auto& [format, channels] : cases) {
     ASSERT_TRUE(renderer::gpuSupportsFormat(format, false))
         << core::textureFormatInfo(format).name << " needs " << renderer::formatRequirement(format);
@@ -158,6 +161,63 @@ TEST_F(CompressedSampling, RandomBlocksDecodeAsTheGpuSamplesThem) {
   }
 }
 
+// BC7 decodes integer by integer, so llvmpipe and core must agree exactly (half a step bounds
+// the float readback). Each block has random endpoints, p-bits and indices; the blocks cover
+// all 16 partitions of mode 0, all 64 of modes 1, 2, 3 and 7, and every rotation (and, in mode
+// 4, index selection) of modes 4 and 5, 16 blocks each, and mode 6.
+TEST_F(CompressedSampling, EveryBc7ModeAndPartitionDecodesAsTheGpuDecodesIt) {
+  ASSERT_TRUE(renderer::gpuSupportsFormat(TextureFormat::Bc7, false))
+      << renderer::formatRequirement(TextureFormat::Bc7);
+  std::mt19937 random(99);
+  const auto field = [&](int bits) { return bits ? int(random() % (1u << bits)) : 0; };
+  std::vector<core::Bc7Block> blocks;
+  for (int m = 0; m < 8; ++m) {
+    const core::Bc7Mode& mode = core::kBc7Modes[m];
+    const int variants = m == 4 ? 8 : m == 5 ? 4 : m == 6 ? 1 : 1 << mode.partitionBits;
+    const int copies = m >= 4 && m <= 5 ? 16 : m == 6 ? 64 : 1;
+    for (int variant = 0; variant < variants; ++variant) {
+      for (int copy = 0; copy < copies; ++copy) {
+        core::Bc7Block block;
+        block.mode = m;
+        block.partition = mode.partitionBits ? variant : 0;
+        block.rotation = mode.rotationBits ? variant % 4 : 0;
+        block.indexSelection = mode.indexSelectionBits ? variant / 4 : 0;
+        for (int s = 0; s < mode.subsets; ++s) {
+          for (int e = 0; e < 2; ++e) {
+            for (int c = 0; c < 4; ++c) {
+              block.endpoints[s][e][c] =
+                  std::uint8_t(field(c < 3 ? mode.colourBits : mode.alphaBits));
+            }
+            block.pBits[s][e] = std::uint8_t(field(1));
+          }
+          if (mode.sharedPBits)
+            block.pBits[s][1] = block.pBits[s][0];
+        }
+        for (int t = 0; t < 16; ++t) {
+          bool anchor = false;
+          for (int s = 0; s < mode.subsets; ++s)
+            anchor = anchor || core::bc7Anchor(mode.subsets, block.partition, s) == t;
+          block.indices[t] = std::uint8_t(field(mode.indexBits - (anchor ? 1 : 0)));
+          if (mode.secondaryIndexBits)
+            block.secondaryIndices[t] =
+                std::uint8_t(field(mode.secondaryIndexBits - (t == 0 ? 1 : 0)));
+        }
+        blocks.push_back(block);
+      }
+    }
+  }
+  // 16 + 4 x 64 + 8 x 16 + 4 x 16 + 64 = 528 blocks, 32 to a row; the last row is padded with
+  // all-zero blocks, the reserved mode, which decodes as transparent black.
+  const int blocksWide = 32, blocksHigh = int((blocks.size() + 31) / 32);
+  core::CompressedTexture texture;
+  texture.format = TextureFormat::Bc7;
+  texture.levels.push_back({4 * blocksWide, 4 * blocksHigh, {}});
+  texture.levels[0].data.assign(std::size_t(blocksWide * blocksHigh) * 16, 0);
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    core::packBc7Block(blocks[b], texture.levels[0].data.data() + 16 * b);
+  EXPECT_LE(worstDifference(texture, 0, 4), 0.5 / 255.0);
+}
+
 TEST_F(CompressedSampling, EncodedTexturesAndMipLevelsAgree) {
   const core::Image colour = core::loadImage(sourcePath("samples/tiles/tiles_color.png")).value();
   core::Image crop(72, 40, colour.channels(), colour.colorSpace());
@@ -165,11 +225,12 @@ TEST_F(CompressedSampling, EncodedTexturesAndMipLevelsAgree) {
     for (int x = 0; x < 72; ++x)
       std::copy_n(colour.pixel(x + 200, y + 200), colour.channels(), crop.pixel(x, y));
   }
-  // Encoded colour in sRGB formats (the sampler converts to linear), with mips: BC1, BC3,
+  // Encoded colour in sRGB formats (the sampler converts to linear), with mips: BC1, BC3, BC7,
   // ETC1 (as ETC2 RGB), ETC2 RGBA and every ASTC size.
-  for (TextureFormat format : {TextureFormat::Bc1, TextureFormat::Bc3, TextureFormat::Etc1,
-                               TextureFormat::Etc2A, TextureFormat::Astc4x4, TextureFormat::Astc5x5,
-                               TextureFormat::Astc6x6, TextureFormat::Astc8x8}) {
+  for (TextureFormat format :
+       {TextureFormat::Bc1, TextureFormat::Bc3, TextureFormat::Bc7, TextureFormat::Etc1,
+        TextureFormat::Etc2A, TextureFormat::Astc4x4, TextureFormat::Astc5x5,
+        TextureFormat::Astc6x6, TextureFormat::Astc8x8}) {
     const core::CompressedTexture texture =
         core::compressMap(crop, core::MapSlot::Color,
                           {format, core::CompressionQuality::Fast, true})
@@ -193,6 +254,16 @@ TEST_F(CompressedSampling, EncodedTexturesAndMipLevelsAgree) {
         rgba.at(x, y, c) = crop.at(x, y, c);
       rgba.at(x, y, 3) = float(x) / 71.0f;
     }
+  }
+  // BC7 RGBA from our encoder at every quality (each searches different modes).
+  for (core::CompressionQuality quality :
+       {core::CompressionQuality::Fast, core::CompressionQuality::Normal,
+        core::CompressionQuality::Best}) {
+    core::CompressedTexture texture =
+        core::compressMap(rgba, core::MapSlot::Color, {TextureFormat::Bc7, quality, false}).value();
+    texture.srgb = false;
+    EXPECT_LE(worstDifference(texture, 0, 4), 0.5 / 255.0)
+        << "bc7 " << core::compressionQualityName(quality);
   }
   for (TextureFormat format : {TextureFormat::Astc4x4, TextureFormat::Astc8x8}) {
     core::CompressedTexture texture;

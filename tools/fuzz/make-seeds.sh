@@ -28,10 +28,10 @@ oiiotool --pattern checker 9x9 4 -d half --compression piz -o "$corpus/exr/seed-
 
 # Textures: every format in each container that holds it, with and without mips.
 oiiotool --pattern checker:width=2:height=2 8x8 4 -d uint8 -o "$work/map.png"
-for format in bc1 bc2 bc3 bc4 bc5 dxt5nm etc1 etc2 etc2a eac-r11 eac-rg11 astc4x4 astc6x6; do
+for format in bc1 bc2 bc3 bc4 bc5 dxt5nm bc7 etc1 etc2 etc2a eac-r11 eac-rg11 astc4x4 astc6x6; do
   for container in dds ktx2; do
     options=()
-    case $format in bc3|etc2) options+=(--mips) ;; esac
+    case $format in bc3|bc7|etc2) options+=(--mips) ;; esac
     case $format in bc5|dxt5nm|eac-rg11) options+=(--normal) ;; esac
     # Formats a container cannot hold (ETC and ASTC in DDS) are refused; no seed then.
     if "$cli" compress --in "$work/map.png" --format "$format" "${options[@]}" \
