@@ -71,7 +71,7 @@ Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
 TextureFormat suggestedFormat(MapSlot slot, int channels) {
   switch (slot) {
     case MapSlot::Color:
-      return channels == 4 ? TextureFormat::Bc3 : TextureFormat::Bc1;
+      return channels == 4 ? TextureFormat::Bc7 : TextureFormat::Bc1;
     case MapSlot::Normal:
       return TextureFormat::Bc5;
     default:

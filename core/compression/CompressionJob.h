@@ -50,8 +50,9 @@ std::vector<std::string> compressionWarnings(const Image& map, TextureFormat for
 Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
                                              const WorkControl& control = {});
 
-// The usual choice for a map: BC1 (BC3 with alpha) for colour, BC5 for normals, BC4 for
-// single-value maps; what the Compress panel picks when the artist has chosen nothing.
+// The usual choice for a map: BC1 (BC7 with alpha: BC3's size, and its colour is far better
+// than BC3's BC1 half) for colour, BC5 for normals, BC4 for single-value maps; what the
+// Compress panel picks when the artist has chosen nothing.
 TextureFormat suggestedFormat(MapSlot slot, int channels);
 
 }  // namespace relief::core::inline compression

@@ -444,9 +444,12 @@ TEST(DifferenceImageTest, GainAndThresholdFollowTheDefinitions) {
 TEST(CompressionQualityTest, ColourFormatsMeetTheirFloors) {
   const Image colour = sampleCrop("bricks/bricks_color.png");
   const std::pair<TextureFormat, double> floors[] = {
-      // Measured: BC1 43.33, BC3 43.31, ETC1 and ETC2 RGBA 38.96, ASTC 4x4 54.03, 8x8 45.01 dB.
+      // Measured: BC1 43.33, BC3 43.31, ETC1 and ETC2 RGBA 38.96, ASTC 4x4 54.03, 8x8 45.01,
+      // BC7 51.75 dB (this synthetic map's smooth gradients favour ASTC's finer endpoints; on
+      // photographs BC7 leads, Bc7Test).
       {TextureFormat::Bc1, 42.5},   {TextureFormat::Bc3, 42.5},     {TextureFormat::Etc1, 38.0},
-      {TextureFormat::Etc2A, 38.0}, {TextureFormat::Astc4x4, 52.0}, {TextureFormat::Astc8x8, 43.5}};
+      {TextureFormat::Etc2A, 38.0}, {TextureFormat::Astc4x4, 52.0}, {TextureFormat::Astc8x8, 43.5},
+      {TextureFormat::Bc7, 50.5}};
   for (const auto& [format, floor] : floors) {
     const CompressedTexture texture = compressMap(colour, MapSlot::Color, {format}).value();
     const ImageError error = measureImageError(colour, decodeAsMap(texture).value());
