@@ -82,7 +82,8 @@ std::unique_ptr<QOpenGLTexture> createCompressedTexture(const core::CompressedTe
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  if (texture.format == core::TextureFormat::Dxt5nm)
+  // X in alpha (DXT5nm, ASTC normal): the shader reads X, Y from red and green.
+  if (info.layout == core::FormatLayout::NormalAg)
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R, GL_ALPHA);
   const bool failed = gl.glGetError() != GL_NO_ERROR;
   gl.glBindTexture(GL_TEXTURE_2D, GLuint(previous));

@@ -70,8 +70,8 @@ CliOptions compressOptions() {
       {QStringLiteral("in"), QStringLiteral("file"), QStringLiteral("The map."), {}},
       {QStringLiteral("format"), QStringLiteral("format"), formatNames(), {}},
       {QStringLiteral("quality"), QStringLiteral("quality"),
-       QStringLiteral("fast|normal|best: libsquish range fit, cluster fit, iterative cluster "
-                      "fit; astcenc's presets; EAC search depth."),
+       QStringLiteral("fast|normal|best: the search depth of Relief's BC and EAC encoders; "
+                      "astcenc's fast, medium and thorough presets."),
        QStringLiteral("normal")},
       {QStringLiteral("mips"),
        {},
@@ -86,6 +86,11 @@ CliOptions compressOptions() {
                       "(1 fastest .. 22 smallest; 0 none). Lossless: the GPU gets the same "
                       "blocks, the file and the download are smaller."),
        QStringLiteral("0")},
+      {QStringLiteral("perceptual"),
+       {},
+       QStringLiteral("BC1-BC3 colour: weigh the error by luminance (Rec. 709) instead of "
+                      "alike per channel, as PSNR measures it."),
+       {}},
       {QStringLiteral("metrics"),
        QStringLiteral("text|json"),
        QStringLiteral("Print the quality metrics: text or json (on standard output)."),
@@ -163,7 +168,8 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
   job.slot = slotOption(parser).value_or(
       core::isSingleChannelFormat(*format) ? core::MapSlot::Height : core::MapSlot::Color);
   job.map = std::make_shared<const core::Image>(std::move(map).value());
-  job.settings = {*format, *quality, parser.isSet(QStringLiteral("mips")), *zstdLevel};
+  job.settings = {*format, *quality, parser.isSet(QStringLiteral("mips")), *zstdLevel,
+                  parser.isSet(QStringLiteral("perceptual"))};
   job.heightScale = *heightScale;
   job.measure = parser.isSet(QStringLiteral("metrics"));
   if (const std::string problem = core::formatSlotProblem(*format, job.slot); !problem.empty()) {

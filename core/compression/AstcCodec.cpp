@@ -54,7 +54,12 @@ Result<std::vector<std::uint8_t>> encodeAstc(TextureFormat format, CompressionQu
                                              const WorkControl& control) {
   const TextureFormatInfo& info = textureFormatInfo(format);
   const unsigned threads = unsigned(std::max(1, QThread::idealThreadCount()));
-  Result<Context> context = makeContext(format, srgb, preset(quality), 0, threads);
+  // Normal formats: astcenc's normal mode (angular error; X and Y as two channels), stored with
+  // its "gggr" swizzle so the blocks hold the DXT5nm layout (Y in R, G, B and X in alpha) from
+  // the prepared X, Y in red and green.
+  const bool normal = info.layout == FormatLayout::NormalAg;
+  Result<Context> context =
+      makeContext(format, srgb, preset(quality), normal ? ASTCENC_FLG_MAP_NORMAL : 0, threads);
   if (!context)
     return makeError(context.error());
 
@@ -66,7 +71,9 @@ Result<std::vector<std::uint8_t>> encodeAstc(TextureFormat format, CompressionQu
   const int blocksX = (width + info.blockWidth - 1) / info.blockWidth;
   const int blockRows = (height + info.blockHeight - 1) / info.blockHeight;
   std::vector<std::uint8_t> out(std::size_t(blocksX) * std::size_t(blockRows) * 16);
-  const astcenc_swizzle swizzle{ASTCENC_SWZ_R, ASTCENC_SWZ_G, ASTCENC_SWZ_B, ASTCENC_SWZ_A};
+  const astcenc_swizzle swizzle =
+      normal ? astcenc_swizzle{ASTCENC_SWZ_G, ASTCENC_SWZ_G, ASTCENC_SWZ_G, ASTCENC_SWZ_R}
+             : astcenc_swizzle{ASTCENC_SWZ_R, ASTCENC_SWZ_G, ASTCENC_SWZ_B, ASTCENC_SWZ_A};
   constexpr int kStripBlockRows = 16;
   for (int firstRow = 0; firstRow < blockRows; firstRow += kStripBlockRows) {
     if (control.cancelled())

@@ -6,29 +6,11 @@
 #include "core/compression/Bc7Block.h"
 #include "core/compression/BlockCodecs.h"
 
-#include <squish.h>
-
 #include <algorithm>
 #include <cmath>
 
 namespace relief::core::inline compression {
 namespace {
-
-std::uint8_t toByte(float value) {
-  return std::uint8_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
-}
-
-int squishFit(CompressionQuality quality) {
-  switch (quality) {
-    case CompressionQuality::Fast:
-      return squish::kColourRangeFit;
-    case CompressionQuality::Normal:
-      return squish::kColourClusterFit;
-    case CompressionQuality::Best:
-      return squish::kColourIterativeClusterFit;
-  }
-  return squish::kColourClusterFit;
-}
 
 std::uint16_t read16(const std::uint8_t* p) {
   return std::uint16_t(p[0] | p[1] << 8);
@@ -226,40 +208,33 @@ void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool percep
     }
     return;
   }
-  squish::u8 rgba[16 * 4];
-  for (int t = 0; t < 16; ++t) {
-    for (int ch = 0; ch < 4; ++ch)
-      rgba[t * 4 + ch] = toByte(texels[t][ch]);
-    if (format == TextureFormat::Dxt5nm) {
-      // X to alpha, Y stays in green; red and blue carry nothing, so the colour fit spends
-      // everything on green.
-      rgba[t * 4 + 3] = rgba[t * 4 + 0];
-      rgba[t * 4 + 0] = 0;
-      rgba[t * 4 + 2] = 0;
+  // The alpha half: BC2's explicit 4-bit values, BC3's (and DXT5nm's) a BC4 channel block.
+  if (format == TextureFormat::Bc2) {
+    for (int t = 0; t < 16; t += 2) {
+      const int a0 = int(std::lround(std::clamp(texels[t][3], 0.0f, 1.0f) * 15.0f));
+      const int a1 = int(std::lround(std::clamp(texels[t + 1][3], 0.0f, 1.0f) * 15.0f));
+      out[t / 2] = std::uint8_t(a0 | a1 << 4);
     }
+  } else if (format == TextureFormat::Bc3 || format == TextureFormat::Dxt5nm) {
+    // DXT5nm stores normal X in alpha (and Y in green below).
+    const int source = format == TextureFormat::Dxt5nm ? 0 : 3;
+    float values[16];
+    for (int t = 0; t < 16; ++t)
+      values[t] = std::clamp(texels[t][source], 0.0f, 1.0f) * 255.0f;
+    encodeChannelBlock(values, validMask, quality, out);
   }
-  int flags = squishFit(quality);
-  // libsquish 1.15 takes the metric as channel weights; null is uniform.
-  float perceptualWeights[3] = {0.2126f, 0.7152f, 0.0722f};
-  float* metric = perceptual && format != TextureFormat::Dxt5nm ? perceptualWeights : nullptr;
-  switch (format) {
-    case TextureFormat::Bc1:
-      flags |= squish::kDxt1;
-      // kDxt1 turns alpha < 128 into transparent black (PLATFORM.md): BC1 here is opaque.
-      for (int t = 0; t < 16; ++t)
-        rgba[t * 4 + 3] = 255;
-      break;
-    case TextureFormat::Bc2:
-      flags |= squish::kDxt3;
-      break;
-    case TextureFormat::Bc3:
-    case TextureFormat::Dxt5nm:
-      flags |= squish::kDxt5;
-      break;
-    default:
-      return;
+  // The colour half. DXT5nm's red and blue carry nothing, so the fit spends everything on
+  // green.
+  float rgb[16][3];
+  for (int t = 0; t < 16; ++t) {
+    for (int ch = 0; ch < 3; ++ch)
+      rgb[t][ch] = std::clamp(texels[t][ch], 0.0f, 1.0f) * 255.0f;
+    if (format == TextureFormat::Dxt5nm)
+      rgb[t][0] = rgb[t][2] = 0.0f;
   }
-  squish::CompressMasked(rgba, validMask, out, flags, metric);
+  const bool bc1 = format == TextureFormat::Bc1;
+  encodeBc1Colour(rgb, validMask, quality, perceptual && format != TextureFormat::Dxt5nm, bc1,
+                  bc1 ? out : out + 8);
 }
 
 void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels) {

@@ -12,11 +12,13 @@ namespace relief::core::inline compression {
 
 using BlockTexels = float[16][4];
 
-// BC1-BC3 and DXT5nm: encoded with libsquish (range fit, cluster fit, iterative cluster fit
-// for fast, normal, best). BC4 and BC5: our own encoder (libsquish's misses the 1 s target for
-// 4096^2 BC5; see BcCodec.cpp). All decoded by our own decoder (libsquish decodes BC4/BC5
-// wrongly, PLATFORM.md).
-// `perceptual` weighs colour error by luminance (colour maps); data maps weigh channels alike.
+// BC1-BC5, DXT5nm and BC7: our own encoders and decoders. BC1's colour (also the colour half of
+// BC2, BC3 and DXT5nm) is Bc1Encoder.cpp, in place of libsquish's cluster fit, which is ten
+// times slower for the same quality (tools/bench-compress keeps libsquish as the reference
+// row); BC3's alpha and BC4/BC5 channels are BcCodec.cpp's (libsquish's missed the 1 s target
+// for 4096^2 BC5); BC7 is Bc7Encoder.cpp. libsquish decodes BC4/BC5 wrongly, so the decoders
+// are ours too.
+// `perceptual` weighs colour error by luminance; otherwise channels weigh alike (PSNR's measure).
 void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool perceptual,
                    const BlockTexels& texels, int validMask, std::uint8_t* out);
 void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels);
@@ -25,6 +27,10 @@ void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& te
 // encodeBcBlock and decodeBcBlock dispatch BC7 here too.
 void encodeBc7Block(CompressionQuality quality, const BlockTexels& texels, int validMask,
                     std::uint8_t* out);
+// One BC1 colour block (8 bytes) from RGB in 0..255. `bc1`: a BC1 block, which may use the
+// three-colour mode; otherwise the colour half of BC2/BC3, which always decodes four colours.
+void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality quality,
+                     bool perceptual, bool bc1, std::uint8_t* out);
 
 // ETC1 (android-libetc1; also a valid ETC2 RGB block), ETC2 RGBA (ETC1 colour with our EAC
 // alpha), EAC R11 and RG11 (our encoder). Decoding covers every ETC2 mode (individual,

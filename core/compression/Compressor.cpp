@@ -55,7 +55,7 @@ bool encodeBlocks(const Image& map, MapSlot slot, const CompressionSettings& set
   const int width = map.width(), height = map.height();
   const int blocksX = (width + 3) / 4, blocksY = (height + 3) / 4;
   const bool twoChannelNormal = isTwoChannelNormal(slot, settings.format);
-  const bool perceptual = slot == MapSlot::Color;
+  const bool perceptual = settings.perceptual && slot == MapSlot::Color;
   out.assign(std::size_t(blocksX) * std::size_t(blocksY) * std::size_t(info.bytesPerBlock), 0);
   return parallelFor(
       blocksY,
@@ -122,7 +122,8 @@ bool formatSuitsSlot(TextureFormat format, MapSlot slot) {
     case MapSlot::Normal:
       return layout != FormatLayout::R;
     default:
-      return layout == FormatLayout::R || layout == FormatLayout::Rgb || isAstc(format);
+      return layout == FormatLayout::R || layout == FormatLayout::Rgb ||
+             (isAstc(format) && layout == FormatLayout::Rgba);
   }
 }
 

@@ -33,6 +33,7 @@ constexpr std::uint32_t kChannelColorBc = 0, kChannelRed = 0, kChannelGreen = 1,
                         kChannelEtc2Color = 2, kChannelAlpha = 15;
 constexpr std::uint32_t kPrimariesBt709 = 1, kTransferLinear = 1, kTransferSrgb = 2;
 constexpr std::string_view kSlotKey = "ReliefMapSlot", kChannelsKey = "ReliefSourceChannels";
+constexpr std::string_view kSwizzleKey = "KTXswizzle", kNormalAgSwizzle = "ag01";
 constexpr std::uint32_t kSchemeNone = 0, kSchemeZstd = 2;
 
 // One level through Zstandard, with every core (libzstd's own workers).
@@ -137,6 +138,10 @@ std::vector<std::uint8_t> keyValueData(const CompressedTexture& texture) {
       {std::string(kSlotKey), std::string(mapSlotName(texture.slot))},
       {std::string(kChannelsKey), std::to_string(texture.sourceChannels)},
   };
+  // X in alpha and Y in green (DXT5nm, ASTC normal): KTX 2.0's swizzle key says how to sample
+  // them as X, Y in red and green, and tells these files from BC3 and ASTC RGB ones.
+  if (textureFormatInfo(texture.format).layout == FormatLayout::NormalAg)
+    entries.emplace(std::string(kSwizzleKey), std::string(kNormalAgSwizzle));
   ByteWriter out;
   for (const auto& [key, value] : entries) {
     out.u32(std::uint32_t(key.size() + 1 + value.size() + 1));
@@ -151,9 +156,9 @@ std::vector<std::uint8_t> keyValueData(const CompressedTexture& texture) {
 
 std::optional<TextureFormat> formatForVk(std::uint32_t vkFormat, bool& srgb) {
   for (const TextureFormatInfo& info : allTextureFormats()) {
-    // DXT5nm shares BC3's code and ETC2 RGB ETC1's; the first row wins (BC3, ETC1 is ETC2's
-    // subset, so the stream is read as ETC2 RGB).
-    if (info.format == TextureFormat::Dxt5nm || info.format == TextureFormat::Etc1)
+    // DXT5nm shares BC3's code, the ASTC normal formats their RGB ones', and ETC2 RGB ETC1's;
+    // the first row wins (BC3, ASTC; ETC1 is ETC2's subset, so the stream is read as ETC2 RGB).
+    if (info.layout == FormatLayout::NormalAg || info.format == TextureFormat::Etc1)
       continue;
     if (info.vkFormat == vkFormat || (info.srgbVkFormat != 0 && info.srgbVkFormat == vkFormat)) {
       srgb = info.srgbVkFormat == vkFormat;
@@ -259,6 +264,7 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
   texture.zstdInFile = supercompression == kSchemeZstd;
 
   // Our own keys say what the map was; other writers' files fall back to the layout's guess.
+  bool normalAg = false;
   if (kvdLength > 0) {
     std::size_t at = kvdOffset;
     const std::size_t end = std::size_t(kvdOffset) + kvdLength;
@@ -280,13 +286,22 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
             texture.slot = *slot;
         } else if (key == kChannelsKey && value.size() == 1 && value[0] >= '1' && value[0] <= '4') {
           texture.sourceChannels = value[0] - '0';
+        } else if (key == kSwizzleKey) {
+          normalAg = value == kNormalAgSwizzle;
         }
       }
       at += 4 + ((length + 3) / 4) * 4;
     }
   }
-  if (texture.slot == MapSlot::Normal && *format == TextureFormat::Bc3)
-    texture.format = TextureFormat::Dxt5nm;  // BC3 holding a normal: X in alpha, Y in green
+  // The X-in-alpha normal formats share their codes: the swizzle key marks them (and, from
+  // files written before it was, a BC3 file holding a normal map is DXT5nm).
+  if (normalAg || (texture.slot == MapSlot::Normal && *format == TextureFormat::Bc3)) {
+    for (const TextureFormatInfo& info : allTextureFormats()) {
+      if (info.layout == FormatLayout::NormalAg &&
+          info.vkFormat == textureFormatInfo(*format).vkFormat)
+        texture.format = info.format;
+    }
+  }
 
   int w = int(width), h = int(height);
   for (int level = 0; level < levels; ++level) {

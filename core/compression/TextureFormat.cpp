@@ -10,7 +10,7 @@
 namespace relief::core::inline compression {
 namespace {
 
-constexpr std::array<TextureFormatInfo, 16> kFormats = {{
+constexpr std::array<TextureFormatInfo, 20> kFormats = {{
     {TextureFormat::Bc1, "bc1", "BC1 (DXT1)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 8,
      FormatLayout::Rgb, 131, 132, makeFourCC('D', 'X', 'T', '1'), 71, 72, 0x83F0, 0x8C4C},
     {TextureFormat::Bc2, "bc2", "BC2 (DXT3)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 16,
@@ -43,6 +43,18 @@ constexpr std::array<TextureFormatInfo, 16> kFormats = {{
      16, FormatLayout::Rgba, 165, 166, 0, 0, 0, 0x93B4, 0x93D4},
     {TextureFormat::Astc8x8, "astc8x8", "ASTC 8x8", FormatFamily::Astc, GpuFeature::AstcLdr, 8, 8,
      16, FormatLayout::Rgba, 171, 172, 0, 0, 0, 0x93B7, 0x93D7},
+    {TextureFormat::Astc4x4Normal, "astc4x4-normal", "ASTC 4x4 normal (X in A, Y in G)",
+     FormatFamily::Astc, GpuFeature::AstcLdr, 4, 4, 16, FormatLayout::NormalAg, 157, 0, 0, 0, 0,
+     0x93B0, 0},
+    {TextureFormat::Astc5x5Normal, "astc5x5-normal", "ASTC 5x5 normal (X in A, Y in G)",
+     FormatFamily::Astc, GpuFeature::AstcLdr, 5, 5, 16, FormatLayout::NormalAg, 161, 0, 0, 0, 0,
+     0x93B2, 0},
+    {TextureFormat::Astc6x6Normal, "astc6x6-normal", "ASTC 6x6 normal (X in A, Y in G)",
+     FormatFamily::Astc, GpuFeature::AstcLdr, 6, 6, 16, FormatLayout::NormalAg, 165, 0, 0, 0, 0,
+     0x93B4, 0},
+    {TextureFormat::Astc8x8Normal, "astc8x8-normal", "ASTC 8x8 normal (X in A, Y in G)",
+     FormatFamily::Astc, GpuFeature::AstcLdr, 8, 8, 16, FormatLayout::NormalAg, 171, 0, 0, 0, 0,
+     0x93B7, 0},
 }};
 
 // textureFormatInfo indexes the table by the enum: each row must sit at its enum's position.

@@ -29,6 +29,13 @@ enum class TextureFormat {
   Astc5x5,
   Astc6x6,
   Astc8x8,
+  // astcenc's normal-map mode: X in alpha, Y in red, green and blue (its "gggr" swizzle, the
+  // DXT5nm layout), two channels that ASTC's luminance-alpha endpoints store well, with the
+  // error measured as angles.
+  Astc4x4Normal,
+  Astc5x5Normal,
+  Astc6x6Normal,
+  Astc8x8Normal,
 };
 
 // What the channels of a format carry, which decides how a map is fed to it and read back.
@@ -83,6 +90,9 @@ struct CompressionSettings {
   // Zstandard level (1..22) for the levels of a KTX2 file (supercompression scheme 2); 0 writes
   // them as they are. DDS has no supercompression.
   int zstdLevel = 0;
+  // BC1-BC3 colour error weighed by luminance (Rec. 709) instead of alike per channel. Uniform
+  // is the default, as in libsquish and rgbcx, so PSNR compares across tools.
+  bool perceptual = false;
 
   bool operator==(const CompressionSettings&) const = default;
 };

@@ -134,6 +134,8 @@ MapCompression readCompression(const QJsonObject& object, const std::string& slo
       compression.zstdLevel = int(std::lround(*level));
     }
   }
+  // "perceptual": BC1-BC3 colour error weighed by luminance (absent: uniform weights).
+  compression.perceptual = object.value(QStringLiteral("perceptual")).toBool(false);
   return compression;
 }
 
@@ -374,6 +376,8 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
           {QStringLiteral("mipmaps"), compression->mipmaps}};
       if (compression->zstdLevel > 0)
         choice.insert(QStringLiteral("zstd"), compression->zstdLevel);
+      if (compression->perceptual)
+        choice.insert(QStringLiteral("perceptual"), true);
       entry.insert(QStringLiteral("compression"), choice);
     }
     maps.insert(key, entry);

@@ -605,7 +605,8 @@ TEST(Cli, CompressWritesDdsAndKtx2WithMetrics) {
 }
 
 // BC7 from the CLI: a DDS with the DX10 header (148-byte header, 16 bytes per block), far above
-// BC1 on the same map, and `info` names the format; the same blocks in KTX2.
+// BC1 on the same map, and `info` names the format; the same blocks in KTX2. BC1 with
+// --perceptual.
 TEST(Cli, CompressWritesBc7) {
   const std::string folder = scratchFolder();
   const std::string colour = croppedSample("tiles/tiles_color.png");
@@ -623,6 +624,18 @@ TEST(Cli, CompressWritesBc7) {
   EXPECT_EQ(std::filesystem::file_size(folder + "/c7.dds"), 148u + 16u * 64u * 64u);
   const CliRun info = runCli({QStringLiteral("info"), q(folder + "/c7.dds")});
   EXPECT_NE(info.out.find("BC7"), std::string::npos) << info.out;
+  // --perceptual weighs BC1's colour error by luminance: green (70% of the weight) gains, the
+  // uniform PSNR falls.
+  const CliRun perceptual = runCli(
+      {QStringLiteral("compress"), QStringLiteral("--in"), q(colour), QStringLiteral("--format"),
+       QStringLiteral("bc1"), QStringLiteral("--perceptual"), QStringLiteral("--out"),
+       q(folder + "/p1.dds"), QStringLiteral("--metrics"), QStringLiteral("json")});
+  ASSERT_EQ(perceptual.exitCode, 0) << perceptual.err;
+  EXPECT_LT(jsonOf(perceptual)["psnr"].toDouble(), jsonOf(bc1)["psnr"].toDouble());
+  const auto greenPsnr = [](const CliRun& run) {
+    return jsonOf(run)["channels"].toArray()[1].toObject()["psnr"].toDouble();
+  };
+  EXPECT_GT(greenPsnr(perceptual), greenPsnr(bc1));
   const CliRun ktx2 = compress("bc7", folder + "/c7.ktx2");
   ASSERT_EQ(ktx2.exitCode, 0) << ktx2.err;
   EXPECT_EQ(core::loadCompressedTexture(folder + "/c7.ktx2")->levels[0].data,

@@ -9,6 +9,7 @@
 #include "core/compression/Compressor.h"
 #include "core/generators/ImageFilters.h"
 #include "core/image/ImageIO.h"
+#include "support/TestPhotos.h"
 
 #include <gtest/gtest.h>
 
@@ -206,30 +207,8 @@ TEST(Bc7Test, FlatColoursAreExactAndOpaqueMapsStayOpaque) {
   }
 }
 
-// scikit-image's photographs (Debian's python3-skimage, installed by tools/install-deps.sh; not
-// committed: their licences differ). A 256x256 centre crop of each keeps the test quick.
 std::vector<Image> photographs() {
-  std::vector<Image> photos;
-  for (const char* name :
-       {"astronaut.png", "coffee.png", "chelsea.png", "rocket.jpg", "motorcycle_left.png"}) {
-    const std::string path = std::string("/usr/lib/python3/dist-packages/skimage/data/") + name;
-    Result<Image> image = loadImage(path);
-    if (!image) {
-      ADD_FAILURE() << image.error() << " (install python3-skimage: tools/install-deps.sh)";
-      continue;
-    }
-    const Image& full = image.value();
-    Image crop(256, 256, full.channels(), full.colorSpace());
-    const int x0 = (full.width() - 256) / 2, y0 = (full.height() - 256) / 2;
-    for (int y = 0; y < 256; ++y) {
-      for (int x = 0; x < 256; ++x) {
-        for (int c = 0; c < full.channels(); ++c)
-          crop.at(x, y, c) = full.at(x0 + x, y0 + y, c);
-      }
-    }
-    photos.push_back(std::move(crop));
-  }
-  return photos;
+  return test::photographCrops(256);
 }
 
 double psnrAfter(const Image& photo, TextureFormat format, CompressionQuality quality) {

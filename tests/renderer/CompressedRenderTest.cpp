@@ -59,7 +59,8 @@ TEST_F(CompressedRender, NativeUploadsRenderAsCoreDecodingDoes) {
       {MapSlot::Normal, TextureFormat::EacRg11}, {MapSlot::Normal, TextureFormat::Bc1},
       {MapSlot::Color, TextureFormat::Bc1},      {MapSlot::Color, TextureFormat::Etc2A},
       {MapSlot::Color, TextureFormat::Astc6x6},  {MapSlot::Height, TextureFormat::Bc4},
-      {MapSlot::Height, TextureFormat::EacR11}};
+      {MapSlot::Height, TextureFormat::EacR11},  {MapSlot::Normal, TextureFormat::Astc4x4Normal},
+      {MapSlot::Color, TextureFormat::Bc7}};
   for (const auto& [slot, format] : cases) {
     const core::Material material = withCompressed(slot, format);
     const core::Image native = render(material, true);

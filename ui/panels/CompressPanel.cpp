@@ -257,11 +257,13 @@ void CompressPanel::writeChoice(core::MapSlot slot) {
   const int format = row.format->currentData().toInt();
   core::MapCompression choice;
   if (format != kUncompressed) {
-    // A preset's choice keeps its mipmap flag; a new one has mipmaps, as shipped textures do.
+    // A preset's choice keeps its mipmap and perceptual flags; a new one has mipmaps, as shipped
+    // textures do.
     const core::MapCompression& previous = m_document->compression(slot);
     choice = core::CompressionSettings{
         core::TextureFormat(format), core::CompressionQuality(row.quality->currentData().toInt()),
-        previous ? previous->mipmaps : true, previous ? previous->zstdLevel : m_zstd->value()};
+        previous ? previous->mipmaps : true, previous ? previous->zstdLevel : m_zstd->value(),
+        previous && previous->perceptual};
   }
   m_document->setCompression(slot, choice);
 }

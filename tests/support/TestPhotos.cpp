@@ -1,0 +1,36 @@
+// TestPhotos; see TestPhotos.h.
+#include "support/TestPhotos.h"
+
+#include "core/image/ImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace relief::test {
+
+std::vector<core::Image> photographCrops(int size) {
+  std::vector<core::Image> photos;
+  for (const char* name :
+       {"astronaut.png", "coffee.png", "chelsea.png", "rocket.jpg", "motorcycle_left.png"}) {
+    const std::string path = std::string("/usr/lib/python3/dist-packages/skimage/data/") + name;
+    core::Result<core::Image> image = core::loadImage(path);
+    if (!image) {
+      ADD_FAILURE() << image.error() << " (install python3-skimage: tools/install-deps.sh)";
+      continue;
+    }
+    const core::Image& full = image.value();
+    core::Image crop(size, size, full.channels(), full.colorSpace());
+    const int x0 = (full.width() - size) / 2, y0 = (full.height() - size) / 2;
+    for (int y = 0; y < size; ++y) {
+      for (int x = 0; x < size; ++x) {
+        for (int c = 0; c < full.channels(); ++c)
+          crop.at(x, y, c) = full.at(x0 + x, y0 + y, c);
+      }
+    }
+    photos.push_back(std::move(crop));
+  }
+  return photos;
+}
+
+}  // namespace relief::test

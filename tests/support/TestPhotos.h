@@ -1,0 +1,17 @@
+// Real photographs for encoder tests: scikit-image's (Debian's python3-skimage, which
+// tools/install-deps.sh installs; not committed, their licences differ). Synthetic maps flatter
+// encoders; these do not.
+#pragma once
+
+#include "core/image/Image.h"
+
+#include <vector>
+
+namespace relief::test {
+
+// A size x size centre crop of each of five colour photographs (astronaut, coffee, chelsea,
+// rocket, motorcycle_left). A photograph that does not load fails the calling test, naming the
+// file and the package to install.
+std::vector<core::Image> photographCrops(int size = 256);
+
+}  // namespace relief::test
