@@ -32,9 +32,10 @@ void encodeBc7Block(CompressionQuality quality, const BlockTexels& texels, int v
 void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality quality,
                      bool perceptual, bool bc1, std::uint8_t* out);
 
-// ETC1 (android-libetc1; also a valid ETC2 RGB block), ETC2 RGBA (ETC1 colour with our EAC
-// alpha), EAC R11 and RG11 (our encoder). Decoding covers every ETC2 mode (individual,
-// differential, T, H, planar), so files from other encoders decode too.
+// ETC1 (android-libetc1; also a valid ETC2 RGB block), ETC2 RGB (ETC1's modes and the planar
+// mode), ETC2 RGBA (that colour with our EAC alpha), EAC R11 and RG11 (our encoder). Decoding
+// covers every ETC2 mode (individual, differential, T, H, planar), so files from other encoders
+// decode too.
 void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const BlockTexels& texels,
                     int validMask, std::uint8_t* out);
 void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels);
@@ -55,5 +56,8 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                       CompressionQuality quality, std::uint8_t out[8]);
 void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]);
 void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]);
+// ETC2's planar mode (Etc2Planar.cpp) for RGB in 0..255; returns the squared error over the
+// valid texels. ETC2 RGB and RGBA keep it where it beats libetc1's ETC1 block.
+float encodeEtc2Planar(const float rgb[16][3], int validMask, std::uint8_t out[8]);
 
 }  // namespace relief::core::inline compression

@@ -130,8 +130,7 @@ bool formatSuitsSlot(TextureFormat format, MapSlot slot) {
 std::vector<TextureFormat> formatsForSlot(MapSlot slot) {
   std::vector<TextureFormat> formats;
   for (const TextureFormatInfo& info : allTextureFormats()) {
-    // ETC2 RGB encodes exactly as ETC1 here (an ETC1 stream); comparing both shows nothing.
-    if (info.format != TextureFormat::Etc2 && formatSuitsSlot(info.format, slot))
+    if (formatSuitsSlot(info.format, slot))
       formats.push_back(info.format);
   }
   return formats;

@@ -348,9 +348,27 @@ void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const Bloc
   }
   // libetc1 averages each sub-block as a sum over its valid texels divided by 8 whatever the
   // mask, so a partial mask darkens edge blocks. The padding repeats edge texels, which makes
-  // fitting every texel correct; the mask is not passed on.
-  (void)validMask;
+  // fitting every texel correct; the mask is not passed on (the planar fit uses it).
   etc1_encode_block(rgb, 0xFFFF, out);
+  if (format == TextureFormat::Etc1)
+    return;
+  // ETC2: its planar mode where it beats ETC1's (T and H modes are not searched yet).
+  float colour[16][3], decoded[16][3];
+  for (int t = 0; t < 16; ++t) {
+    for (int ch = 0; ch < 3; ++ch)
+      colour[t][ch] = float(rgb[t * 3 + ch]);
+  }
+  decodeEtc2Rgb(out, decoded);
+  float etc1Error = 0.0f;
+  for (int t = 0; t < 16; ++t) {
+    for (int ch = 0; ch < 3; ++ch) {
+      const float e = decoded[t][ch] * 255.0f - colour[t][ch];
+      etc1Error += (validMask >> t) & 1 ? e * e : 0.0f;
+    }
+  }
+  std::uint8_t planar[8];
+  if (encodeEtc2Planar(colour, validMask, planar) < etc1Error)
+    std::copy(planar, planar + 8, out);
 }
 
 void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels) {
