@@ -189,6 +189,7 @@ void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]
 // nor the clamp changes an order. So a texel's nearest value is found by counting the
 // midpoints below it (no search, no branch), which the compiler vectorises over the texels.
 constexpr int kEacAscending[8] = {3, 2, 1, 0, 4, 5, 6, 7};
+constexpr float kPruneMargin = 1.5f;
 
 void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                       CompressionQuality quality, std::uint8_t out[8]) {
@@ -241,21 +242,31 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                            middleModifier * (multiplier == 0 ? 1.0f : float(multiplier) * unit);
       const int centreBase = int(std::lround(elevenBit ? (centre - 4.0f) / 8.0f : centre));
       // The error of one base, and (in `offset`) the mean distance from each texel to the
-      // value it picked, which says where the least-squares base for those picks lies.
-      const auto evaluate = [&](int base, float& offset) {
+      // value it picked, which says where the least-squares base for those picks lies. A
+      // candidate whose first eight texels already reach kPruneMargin times the best error so
+      // far stops there (infinity; the eight-texel halves still vectorise): it cannot win, and
+      // a least-squares step from it rarely would. Measured on the 2048^2 bricks maps (tools/
+      // bench-compress): RG11 normal 1.12 s before, 0.86 s after, the same 0.454 degrees;
+      // R11 15.6% above the exhaustive search against 15.5%. A margin of 1 (prune whatever
+      // cannot win by itself) skipped refinements that would have: 17.7%.
+      const auto evaluate = [&](int base, float& offset, bool prunable) {
         float sorted[8], midpoint[7];
         for (int k = 0; k < 8; ++k)
           sorted[k] = decoded(base, multiplier, modifiers[kEacAscending[k]]);
         for (int k = 0; k < 7; ++k)
           midpoint[k] = 0.5f * (sorted[k] + sorted[k + 1]);
         float error = 0.0f, shift = 0.0f;
-        for (int t = 0; t < 16; ++t) {
-          int rank = 0;
-          for (int k = 0; k < 7; ++k)
-            rank += target[t] > midpoint[k] ? 1 : 0;
-          const float difference = sorted[rank] - target[t];
-          error += weight[t] * difference * difference;
-          shift += weight[t] * difference;
+        for (int half = 0; half < 2; ++half) {
+          for (int t = 8 * half; t < 8 * half + 8; ++t) {
+            int rank = 0;
+            for (int k = 0; k < 7; ++k)
+              rank += target[t] > midpoint[k] ? 1 : 0;
+            const float difference = sorted[rank] - target[t];
+            error += weight[t] * difference * difference;
+            shift += weight[t] * difference;
+          }
+          if (prunable && half == 0 && error >= kPruneMargin * bestError)
+            return std::numeric_limits<float>::infinity();
         }
         offset = shift / validCount;
         return error;
@@ -273,7 +284,7 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
       for (int base = std::max(0, centreBase - baseReach);
            base <= std::min(255, centreBase + baseReach); ++base) {
         float offset = 0.0f;
-        const float error = evaluate(base, offset);
+        const float error = evaluate(base, offset, true);
         consider(base, error);
         if (error < bestHere) {
           bestHere = error;
@@ -286,7 +297,7 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
       const int refined = std::clamp(baseHere - int(std::lround(offsetHere / unit)), 0, 255);
       if (std::abs(refined - centreBase) > baseReach) {
         float unused = 0.0f;
-        consider(refined, evaluate(refined, unused));
+        consider(refined, evaluate(refined, unused, true));
       }
     }
   };
