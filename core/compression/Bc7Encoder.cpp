@@ -134,7 +134,7 @@ bool isValid(const FitTarget& target, int texel) {
   return (target.validMask >> texel) & 1;
 }
 
-// Indices for the decoded endpoints and the error they leave; indices go to `result`.
+// Indices for the decoded endpoints and the error they leave; one per texel goes to `indices`.
 int assignIndices(const FitTarget& target, const int decoded[2][4], std::uint8_t indices[16]) {
   const int levels = 1 << target.indexBits;
   const int first = target.firstChannel, n = target.channels;
