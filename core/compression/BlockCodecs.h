@@ -32,10 +32,10 @@ void encodeBc7Block(CompressionQuality quality, const BlockTexels& texels, int v
 void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality quality,
                      bool perceptual, bool bc1, std::uint8_t* out);
 
-// ETC1 (android-libetc1; also a valid ETC2 RGB block), ETC2 RGB (ETC1's modes and the planar
-// mode), ETC2 RGBA (that colour with our EAC alpha), EAC R11 and RG11 (our encoder). Decoding
-// covers every ETC2 mode (individual, differential, T, H, planar), so files from other encoders
-// decode too.
+// ETC1 (android-libetc1; also a valid ETC2 RGB block), ETC2 RGB (ETC1's modes, the planar mode
+// and, at qualities normal and best, the T and H modes), ETC2 RGBA (that colour with our EAC
+// alpha), EAC R11 and RG11 (our encoder). Decoding covers every ETC2 mode (individual,
+// differential, T, H, planar), so files from other encoders decode too.
 void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const BlockTexels& texels,
                     int validMask, std::uint8_t* out);
 void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels);
@@ -50,14 +50,25 @@ inline constexpr int kEacModifiers[16][8] = {
     {-3, -4, -7, -10, 2, 3, 6, 9},  {-1, -2, -3, -10, 0, 1, 2, 9},   {-4, -6, -8, -9, 3, 5, 7, 8},
     {-3, -5, -7, -9, 2, 4, 6, 8}};
 
+// ETC2's T and H mode distances (OpenGL ES 3.0, table C.8), picked by a 3-bit index.
+inline constexpr int kEtc2Distances[8] = {3, 6, 11, 16, 23, 32, 41, 64};
+
 // The pieces, for tests and benchmarks: one EAC block of one channel (11-bit R11 form or 8-bit
 // alpha form).
 void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                       CompressionQuality quality, std::uint8_t out[8]);
 void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]);
 void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]);
+// The mode an ETC2 RGB block is in (OpenGL ES 3.0 C.1.5: the differential bit, then the first
+// channel whose differential sum leaves 0..31).
+enum class Etc2Mode { Individual, Differential, T, H, Planar };
+Etc2Mode etc2Mode(const std::uint8_t in[8]);
 // ETC2's planar mode (Etc2Planar.cpp) for RGB in 0..255; returns the squared error over the
 // valid texels. ETC2 RGB and RGBA keep it where it beats libetc1's ETC1 block.
 float encodeEtc2Planar(const float rgb[16][3], int validMask, std::uint8_t out[8]);
+// ETC2's T and H modes (Etc2TAndH.cpp) for RGB in 0..255: the better of the two for the block;
+// returns the squared error over the valid texels. Best searches more splits of the texels.
+float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality quality,
+                     std::uint8_t out[8]);
 
 }  // namespace relief::core::inline compression

@@ -7,6 +7,7 @@
 // mostly illegal blocks, uses astcenc's encoding of a real map.
 #include "core/compression/AstcCodec.h"
 #include "core/compression/Bc7Block.h"
+#include "core/compression/BlockCodecs.h"
 #include "core/compression/Compressor.h"
 #include "core/image/ColorSpace.h"
 #include "core/image/ImageIO.h"
@@ -216,6 +217,51 @@ TEST_F(CompressedSampling, EveryBc7ModeAndPartitionDecodesAsTheGpuDecodesIt) {
   for (std::size_t b = 0; b < blocks.size(); ++b)
     core::packBc7Block(blocks[b], texture.levels[0].data.data() + 16 * b);
   EXPECT_LE(worstDifference(texture, 0, 4), 0.5 / 255.0);
+}
+
+// Our ETC2 encoder's own blocks in every mode it writes: a tile crop (ETC1 and planar blocks),
+// smooth gradients (planar) and, per block, two random hues in a checkerboard (T and H); the
+// GPU samples them as our decoder does.
+TEST_F(CompressedSampling, EncodedEtc2BlocksOfEveryModeDecodeAsTheGpuDecodesThem) {
+  const core::Image colour = core::loadImage(sourcePath("samples/tiles/tiles_color.png")).value();
+  core::Image image(96, 32, 3);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  float hues[2][3] = {};
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 96; ++x) {
+      if (x % 4 == 0 && y % 4 == 0) {
+        for (auto& hue : hues) {
+          for (float& value : hue)
+            value = unit(random);
+        }
+      }
+      for (int c = 0; c < 3; ++c) {
+        const float gradient = 0.2f + 0.6f * float(x - 32) / 32.0f * (c == 1 ? 0.5f : 1.0f) +
+                               0.004f * float(y * (c + 1));
+        image.at(x, y, c) = x < 32   ? colour.at(x + 300, y + 300, c)
+                            : x < 64 ? gradient
+                                     : hues[(x + y) % 2][c];
+      }
+    }
+  }
+  for (core::CompressionQuality quality :
+       {core::CompressionQuality::Normal, core::CompressionQuality::Best}) {
+    // The blocks compared as UNORM data, exactly (the colour slot makes them sRGB).
+    core::CompressedTexture texture =
+        core::compressMap(image, core::MapSlot::Color, {TextureFormat::Etc2, quality}).value();
+    texture.srgb = false;
+    int modes[5] = {};
+    const std::vector<std::uint8_t>& blocks = texture.levels[0].data;
+    for (std::size_t b = 0; b + 8 <= blocks.size(); b += 8)
+      ++modes[int(core::etc2Mode(blocks.data() + b))];
+    EXPECT_GT(modes[int(core::Etc2Mode::T)], 0);
+    EXPECT_GT(modes[int(core::Etc2Mode::H)], 0);
+    EXPECT_GT(modes[int(core::Etc2Mode::Planar)], 0);
+    EXPECT_GT(modes[int(core::Etc2Mode::Individual)] + modes[int(core::Etc2Mode::Differential)], 0);
+    EXPECT_LE(worstDifference(texture, 0, 3), kTolerance)
+        << "etc2 " << core::compressionQualityName(quality);
+  }
 }
 
 TEST_F(CompressedSampling, EncodedTexturesAndMipLevelsAgree) {
