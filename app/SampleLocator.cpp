@@ -13,7 +13,7 @@ QString samplesDirectory() {
   if (!fromEnvironment.isEmpty())
     candidates << fromEnvironment;
   const QString appDir = QCoreApplication::applicationDirPath();
-  candidates << appDir + QStringLiteral("/../share/relief/samples")
+  candidates << appDir + QStringLiteral("/" RELIEF_INSTALLED_SAMPLES_RELATIVE)
              << QStringLiteral(RELIEF_SOURCE_SAMPLES_DIR);
   for (const QString& candidate : candidates) {
     if (QFileInfo(candidate).isDir())

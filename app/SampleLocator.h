@@ -1,5 +1,6 @@
 // Finds the bundled sample materials: $RELIEF_SAMPLES, then samples/ next to the installed
-// executable (../share/relief/samples), then the source tree the program was built from.
+// executable (share/relief/samples beside bin/, the path packaging/ installs them to), then
+// the source tree the program was built from.
 #pragma once
 
 #include <QString>

@@ -12,6 +12,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QMessageBox>
 #include <QScreen>
 #include <QSurfaceFormat>
@@ -105,6 +106,13 @@ int main(int argc, char* argv[]) {
   QApplication::setApplicationName(QStringLiteral("Relief"));
   QApplication::setOrganizationName(QStringLiteral("Relief"));
   QApplication::setApplicationVersion(QStringLiteral(RELIEF_VERSION));
+  // The desktop entry's name (packaging/), so desktops match windows to it; the icon from the
+  // resources, so windows have it whether or not Relief is installed.
+  QGuiApplication::setDesktopFileName(QStringLiteral("org.reliefeditor.Relief"));
+  QIcon icon;
+  for (int size : {16, 32, 48, 64, 128, 256})
+    icon.addFile(QStringLiteral(":/icons/%1x%1/apps/org.reliefeditor.Relief.png").arg(size));
+  QApplication::setWindowIcon(icon);
   ui::applyDarkTheme(application);
   const StartOptions options = parseStartOptions(application);
 

@@ -17,6 +17,9 @@ packages=(
   # screenshots and independent image readers used while testing; scikit-image ships the real
   # photographs the encoder quality tests and benchmarks use
   imagemagick python3-pil python3-numpy zstd python3-skimage
+  # packaging (make package) and its checks: dpkg-shlibdeps, Debian's package and desktop
+  # validators, the MIME database
+  dpkg-dev lintian desktop-file-utils appstream shared-mime-info
   # the Khronos glTF validator runs on Node.js (tools/gltf-validator/setup.sh fetches it)
   nodejs
 )

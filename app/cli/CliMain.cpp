@@ -8,6 +8,7 @@
 #include "InfoCommand.h"
 #include "PresetCommand.h"
 #include "RenderCommand.h"
+#include "SampleLocator.h"
 
 #include <QCoreApplication>
 
@@ -39,7 +40,7 @@ const std::array kCommands = {
             nullptr, runPreset},
     Command{"export", "Export a preset as a package, glTF 2.0 or a Godot 4 material", nullptr,
             runExport},
-    Command{"compress", "Compress a map into BC1-BC5, DXT5nm, ETC1/ETC2, EAC or ASTC (DDS, KTX2)",
+    Command{"compress", "Compress a map into BC1-BC7, DXT5nm, ETC1/ETC2, EAC or ASTC (DDS, KTX2)",
             nullptr, runCompress},
     Command{"decode", "Decode a DDS or KTX2 file to an image", nullptr, runDecode},
     Command{"compare", "Print quality metrics between a reference and a candidate image or texture",
@@ -53,7 +54,9 @@ QString usage() {
                 .arg(QString::fromLatin1(command.name), -8)
                 .arg(QString::fromUtf8(command.summary));
   }
-  return text + QStringLiteral("\nRun 'relief-cli <command> --help' for a command's options.\n");
+  return text + QStringLiteral(
+                    "\nRun 'relief-cli <command> --help' for a command's options, "
+                    "'relief-cli --version' for the version and the samples' folder.\n");
 }
 
 }  // namespace
@@ -63,6 +66,16 @@ int main(int argc, char* argv[]) {
       std::strcmp(argv[1], "help") == 0) {
     printOut(usage());
     return argc < 2 ? kExitUsage : kExitOk;
+  }
+  if (std::strcmp(argv[1], "--version") == 0) {
+    // The version, and where the bundled samples were found (an install's share/relief/samples
+    // or the source tree of a build), which says which installation is running.
+    QCoreApplication application(argc, argv);
+    const QString samples = relief::app::samplesDirectory();
+    printOut(QStringLiteral("relief-cli %1\nsamples: %2\n")
+                 .arg(QStringLiteral(RELIEF_VERSION),
+                      samples.isEmpty() ? QStringLiteral("not found") : samples));
+    return kExitOk;
   }
   for (const Command& command : kCommands) {
     if (std::strcmp(argv[1], command.name) != 0)

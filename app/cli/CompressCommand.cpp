@@ -70,7 +70,7 @@ CliOptions compressOptions() {
       {QStringLiteral("in"), QStringLiteral("file"), QStringLiteral("The map."), {}},
       {QStringLiteral("format"), QStringLiteral("format"), formatNames(), {}},
       {QStringLiteral("quality"), QStringLiteral("quality"),
-       QStringLiteral("fast|normal|best: the search depth of Relief's BC and EAC encoders; "
+       QStringLiteral("fast|normal|best: the search depth of Relief's BC, ETC2 and EAC encoders; "
                       "astcenc's fast, medium and thorough presets."),
        QStringLiteral("normal")},
       {QStringLiteral("mips"),
