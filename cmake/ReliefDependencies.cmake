@@ -7,6 +7,8 @@ find_package(Threads REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 find_library(FFTW3F_THREADS_LIBRARY fftw3f_threads REQUIRED)
+# zlib for Relief's own PNG writer (core/image/PngWriter.h).
+find_package(ZLIB REQUIRED)
 # Zstandard for KTX2 supercompression (scheme 2).
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
 

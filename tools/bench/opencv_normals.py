@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
-"""Peer pipeline for bench-generate: normals from a height map with OpenCV, the way a
+"""Peer pipeline for the benchmarks: normals from a height map with OpenCV, the way a
 pipeline engineer would write it (cv2.Sobel on both axes, then normalise the vector).
-Reads raw float32 heights (width, height, path on the command line), prints the median
-milliseconds of the compute (no file I/O) over the given number of runs."""
+
+  opencv_normals.py WIDTH HEIGHT RAW RUNS   (bench-generate) reads raw float32 heights and
+      prints the median milliseconds of the compute alone (no file I/O) over RUNS runs;
+  opencv_normals.py --files IN.png OUT.png  (tools/bench-cli) the whole job as a script does
+      it: read a 16-bit height PNG, compute, write a 16-bit normal PNG (cv2.imwrite defaults)."""
 import sys
 import time
 
@@ -21,7 +24,17 @@ def normals(height, strength):
     return cv2.merge([nx * inverse * 0.5 + 0.5, ny * inverse * 0.5 + 0.5, inverse * 0.5 + 0.5])
 
 
+def whole_job(source, target):
+    field = cv2.imread(source, cv2.IMREAD_UNCHANGED).astype(np.float32) / 65535.0
+    rgb = normals(field, 4.0)
+    bgr = rgb[:, :, ::-1]
+    cv2.imwrite(target, np.clip(bgr * 65535.0 + 0.5, 0, 65535).astype(np.uint16))
+
+
 def main():
+    if sys.argv[1] == "--files":
+        whole_job(sys.argv[2], sys.argv[3])
+        return
     width, height, path, runs = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3], int(sys.argv[4])
     field = np.fromfile(path, dtype=np.float32).reshape(height, width)
     times = []
