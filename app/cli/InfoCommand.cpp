@@ -4,8 +4,11 @@
 #include "CliCommon.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
+#include "core/material/MapSlot.h"
 
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 
 namespace relief::cli {
 
@@ -32,15 +35,27 @@ int printTextureInfo(const QString& path) {
   return kExitOk;
 }
 
+// How Relief reads the file in each map slot: colour maps as sRGB colour (the GPU decodes it to
+// linear), the others as linear data whatever the file's tag says (Material::setMap retags
+// them), so a 16-bit grey PNG tagged sRGB is still read as height values as stored.
+QString readAsText(core::MapSlot slot) {
+  return core::mapSlotColorSpace(slot) == core::ColorSpace::Srgb
+             ? QStringLiteral("sRGB colour")
+             : QStringLiteral("linear data, values as stored");
+}
+
 }  // namespace
 
 int runInfo(const QStringList& arguments) {
   QCommandLineParser parser;
   parser.setApplicationDescription(
       QStringLiteral("Print an image's size, channels, bit depth and colour space, after "
-                     "checking that all of its pixel data decodes."));
+                     "checking that all of its pixel data decodes, and how Relief reads it in "
+                     "each map slot."));
   parser.addPositionalArgument(QStringLiteral("image"), QStringLiteral("The image file."));
-  if (auto exit = parseOrExit(parser, arguments, QStringLiteral("relief-cli info <image>"))) {
+  addOptions(parser, {{QStringLiteral("json"), {}, QStringLiteral("Print one JSON object."), {}}});
+  if (auto exit =
+          parseOrExit(parser, arguments, QStringLiteral("relief-cli info <image> [--json]"))) {
     return *exit;
   }
   if (parser.positionalArguments().size() != 1) {
@@ -59,15 +74,46 @@ int runInfo(const QStringList& arguments) {
     printError(QString::fromStdString(intact.error()));
     return kExitFailure;
   }
+  const std::optional<core::MapSlot> slotByName =
+      core::guessMapSlotFromFileName(QFileInfo(path).fileName().toStdString());
+  if (parser.isSet(QStringLiteral("json"))) {
+    QJsonObject readAs;
+    for (core::MapSlot slot : core::kAllMapSlots) {
+      readAs.insert(qstr(core::mapSlotName(slot)),
+                    qstr(core::colorSpaceName(core::mapSlotColorSpace(slot))));
+    }
+    const QJsonObject object{
+        {QStringLiteral("file"), path},
+        {QStringLiteral("format"), QString::fromStdString(info->formatName)},
+        {QStringLiteral("width"), info->width},
+        {QStringLiteral("height"), info->height},
+        {QStringLiteral("channels"), info->channels},
+        {QStringLiteral("bitsPerChannel"), info->bitsPerChannel},
+        {QStringLiteral("float"), info->isFloat},
+        {QStringLiteral("fileColorSpace"), qstr(core::colorSpaceName(info->colorSpace))},
+        {QStringLiteral("readAs"), readAs},
+        {QStringLiteral("slotFromName"),
+         slotByName ? QJsonValue(qstr(core::mapSlotName(*slotByName))) : QJsonValue()}};
+    printOut(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)) +
+             QLatin1Char('\n'));
+    return kExitOk;
+  }
+  QString readAs;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    readAs +=
+        QStringLiteral("\n  as %1: %2%3")
+            .arg(qstr(core::mapSlotName(slot)), readAsText(slot),
+                 slotByName == slot ? QStringLiteral(" (its name suggests this slot)") : QString());
+  }
   printOut(QStringLiteral("file: %1\nformat: %2\nsize: %3x%4\nchannels: %5\n"
-                          "bit depth: %6 (%7)\ncolour space: %8\n")
+                          "bit depth: %6 (%7)\ncolour space in the file: %8\nread by Relief:%9\n")
                .arg(path, QString::fromStdString(info->formatName))
                .arg(info->width)
                .arg(info->height)
                .arg(info->channels)
                .arg(info->bitsPerChannel)
                .arg(info->isFloat ? QStringLiteral("float") : QStringLiteral("integer"))
-               .arg(qstr(core::colorSpaceName(info->colorSpace))));
+               .arg(qstr(core::colorSpaceName(info->colorSpace)), readAs));
   return kExitOk;
 }
 

@@ -127,6 +127,33 @@ TEST(Cli, InfoDescribesAnImage) {
   EXPECT_NE(run.out.find("bit depth: 16"), std::string::npos) << run.out;
 }
 
+// A 16-bit grey PNG without colour chunks is tagged sRGB by PNG's default, but as a height,
+// normal, AO or roughness map Relief reads its values as stored; info says so per slot, in text
+// and in JSON.
+TEST(Cli, InfoSaysHowEachSlotReadsTheFile) {
+  const std::string path = scratchFolder() + "/scan_height.png";
+  core::Image grey(8, 8, 1, core::ColorSpace::Srgb);
+  std::fill(grey.data(), grey.data() + grey.valueCount(), 0.5f);
+  grey.setSourceBitsPerChannel(16);
+  ASSERT_TRUE(core::saveImage(grey, path, core::SampleFormat::UInt16).ok());
+  CliRun run = runCli({QStringLiteral("info"), q(path)});
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("colour space in the file: srgb"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("as height: linear data, values as stored (its name suggests this slot)"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("as color: sRGB colour"), std::string::npos) << run.out;
+  CliRun json = runCli({QStringLiteral("info"), q(path), QStringLiteral("--json")});
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const QJsonObject object = QJsonDocument::fromJson(QByteArray::fromStdString(json.out)).object();
+  EXPECT_EQ(object.value(QStringLiteral("bitsPerChannel")).toInt(), 16);
+  EXPECT_EQ(object.value(QStringLiteral("fileColorSpace")).toString(), QStringLiteral("srgb"));
+  EXPECT_EQ(object.value(QStringLiteral("slotFromName")).toString(), QStringLiteral("height"));
+  const QJsonObject readAs = object.value(QStringLiteral("readAs")).toObject();
+  EXPECT_EQ(readAs.value(QStringLiteral("height")).toString(), QStringLiteral("linear"));
+  EXPECT_EQ(readAs.value(QStringLiteral("color")).toString(), QStringLiteral("srgb"));
+}
+
 TEST(Cli, InfoRefusesBadFilesClearly) {
   for (const auto& [file, problem] : badImageFiles()) {
     expectCleanFailure(runCli({QStringLiteral("info"), q(file)}), file, problem);
@@ -332,6 +359,47 @@ TEST(Cli, GenerateMakesEveryMapAtFullPrecision) {
       runCli({QStringLiteral("generate"), QStringLiteral("height"), QStringLiteral("--in"), normal,
               QStringLiteral("--out"), q(folder + "/depth.png")});
   EXPECT_NE(depth.out.find("relief depth"), std::string::npos) << depth.out;
+}
+
+// generate pack --layout: the Unity HDRP mask map from an AO and a roughness file, read back
+// texel by texel (16-bit PNG: within half a step); a channel term overrides the layout's.
+TEST(Cli, PackLayoutsPutEachMapInItsChannel) {
+  const std::string folder = scratchFolder();
+  core::Image ao(16, 8, 1), roughness(16, 8, 1);
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      ao.at(x, y, 0) = float(x) / 15.0f;
+      roughness.at(x, y, 0) = float(y) / 7.0f;
+    }
+  }
+  ASSERT_TRUE(core::saveImage(ao, folder + "/ao.png", core::SampleFormat::UInt16).ok());
+  ASSERT_TRUE(core::saveImage(roughness, folder + "/rough.png", core::SampleFormat::UInt16).ok());
+  const std::string out = folder + "/mask.png";
+  CliRun run =
+      runCli({QStringLiteral("generate"), QStringLiteral("pack"), QStringLiteral("--layout"),
+              QStringLiteral("unity-mask"), QStringLiteral("--ao"), q(folder + "/ao.png"),
+              QStringLiteral("--roughness"), q(folder + "/rough.png"), QStringLiteral("--b"),
+              QStringLiteral("0.5"), QStringLiteral("--out"), q(out)});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("no --metallic map: its neutral value 0 was used"), std::string::npos)
+      << run.out;
+  core::Result<core::Image> mask = core::loadImage(out);
+  ASSERT_TRUE(mask.ok()) << mask.error();
+  ASSERT_EQ(mask->channels(), 4);
+  const float step = 0.5f / 65535.0f + 1e-6f;
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      EXPECT_NEAR(mask->at(x, y, 0), 0.0f, step);                          // metallic
+      EXPECT_NEAR(mask->at(x, y, 1), ao.at(x, y, 0), step);                // occlusion
+      EXPECT_NEAR(mask->at(x, y, 2), 0.5f, step);                          // --b
+      EXPECT_NEAR(mask->at(x, y, 3), 1.0f - roughness.at(x, y, 0), step);  // smoothness
+    }
+  }
+  CliRun bad = runCli({QStringLiteral("generate"), QStringLiteral("pack"), QStringLiteral("--r"),
+                       QStringLiteral("metal.r"), QStringLiteral("--ao"), q(folder + "/ao.png"),
+                       QStringLiteral("--out"), q(folder + "/bad.png")});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("no map called 'metal'"), std::string::npos) << bad.err;
 }
 
 TEST(Cli, GenerateExplainsWhatIsWrong) {
