@@ -8,6 +8,9 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
+#include <iterator>
+
 namespace relief::cli {
 namespace {
 
@@ -18,6 +21,11 @@ QString generatorList() {
   }
   return text;
 }
+
+// pack: the maps that --layout and the channel terms can name, and the channel options.
+constexpr const char* kPackMapOptions[] = {"color", "normal",    "height",
+                                           "ao",    "roughness", "metallic"};
+constexpr const char* kChannelOptions[] = {"r", "g", "b", "a"};
 
 // The generator's options: its inputs, --out, its OptionSpecs (core's table) and pack's swizzle.
 CliOptions generatorOptions(const core::GeneratorInfo& info) {
@@ -38,6 +46,38 @@ CliOptions generatorOptions(const core::GeneratorInfo& info) {
                        {}});
   }
   if (info.kind == core::GeneratorKind::Pack) {
+    QStringList layouts;
+    for (const core::PackLayout& layout : core::packLayouts())
+      layouts << qstr(layout.name) + QStringLiteral(" (") + qstr(layout.description) +
+                     QLatin1Char(')');
+    options.push_back({QStringLiteral("layout"),
+                       QStringLiteral("name"),
+                       QStringLiteral("A channel layout from any maps instead of height in "
+                                      "normal alpha: ") +
+                           layouts.join(QStringLiteral("; ")) +
+                           QStringLiteral(". Maps not given take their neutral value (AO 1, "
+                                          "roughness 1, metallic 0)."),
+                       {}});
+    for (const char* slot : kPackMapOptions) {
+      if (QLatin1String(slot) == QLatin1String("normal") ||
+          QLatin1String(slot) == QLatin1String("height"))
+        continue;  // the generator's own inputs, above
+      options.push_back({QLatin1String(slot),
+                         QStringLiteral("file"),
+                         QStringLiteral("The %1 map, for --layout and the channel terms.")
+                             .arg(QLatin1String(slot)),
+                         {}});
+    }
+    for (const char* channel : kChannelOptions) {
+      options.push_back(
+          {QLatin1String(channel),
+           QStringLiteral("term"),
+           QStringLiteral("Output channel %1: MAP.c (a map option's name and its channel r, g, "
+                          "b or a, e.g. ao.r), 1-MAP.c (inverted, e.g. 1-roughness.r for "
+                          "smoothness) or a constant in 0..1. Overrides --layout's.")
+               .arg(QString::fromLatin1(channel).toUpper()),
+           {}});
+    }
     options.push_back(
         {QStringLiteral("swizzle"),
          QStringLiteral("terms"),
@@ -116,6 +156,78 @@ std::optional<int> swizzle(const QString& terms, const core::Image& normal, core
   return std::nullopt;
 }
 
+// pack with --layout or channel terms: any map or constant into any channel. Returns nullopt
+// when neither is given (the height-into-normal-alpha generator runs as before).
+std::optional<int> runChannelPack(const QCommandLineParser& parser) {
+  const bool anyChannel =
+      std::any_of(std::begin(kChannelOptions), std::end(kChannelOptions),
+                  [&](const char* c) { return parser.isSet(QLatin1String(c)); });
+  if (!parser.isSet(QStringLiteral("layout")) && !anyChannel)
+    return std::nullopt;
+  std::vector<core::Image> images;
+  std::vector<QString> names;
+  for (const char* slot : kPackMapOptions) {
+    if (!parser.isSet(QLatin1String(slot)))
+      continue;
+    const QString path = parser.value(QLatin1String(slot));
+    core::Result<core::Image> image = core::loadMapFile(path.toStdString());
+    if (!image) {
+      printError(QString::fromStdString(image.error()));
+      return kExitFailure;
+    }
+    images.push_back(std::move(image).value());
+    names.push_back(QLatin1String(slot));
+  }
+  std::vector<core::NamedMap> maps;
+  for (std::size_t i = 0; i < images.size(); ++i)
+    maps.push_back({names[i].toStdString(), &images[i]});
+  std::vector<std::string> terms;
+  std::vector<std::string> substituted;
+  if (parser.isSet(QStringLiteral("layout"))) {
+    const core::PackLayout* layout =
+        core::findPackLayout(parser.value(QStringLiteral("layout")).toStdString());
+    if (!layout) {
+      QStringList known;
+      for (const core::PackLayout& entry : core::packLayouts())
+        known << qstr(entry.name);
+      printError(QStringLiteral("--layout %1: expected %2")
+                     .arg(parser.value(QStringLiteral("layout")), known.join(QLatin1Char('|'))));
+      return kExitUsage;
+    }
+    terms = core::resolveLayoutTerms(*layout, maps, &substituted);
+  }
+  for (std::size_t c = 0; c < std::size(kChannelOptions); ++c) {
+    const QString option = QLatin1String(kChannelOptions[c]);
+    if (!parser.isSet(option))
+      continue;
+    if (terms.size() < c) {
+      printError(QStringLiteral("--%1 given without the channels before it").arg(option));
+      return kExitUsage;
+    }
+    if (terms.size() == c)
+      terms.push_back({});
+    terms[c] = parser.value(option).toStdString();
+  }
+  core::Result<core::Image> packed = core::packChannels(maps, terms);
+  if (!packed) {
+    printError(QStringLiteral("generate pack: ") + QString::fromStdString(packed.error()));
+    return kExitUsage;
+  }
+  const QString outPath = parser.value(QStringLiteral("out"));
+  if (core::Status saved = core::saveImage(packed.value(), outPath.toStdString(),
+                                           core::fullPrecisionFormatFor(outPath.toStdString()));
+      !saved) {
+    printError(QString::fromStdString(saved.error()));
+    return kExitFailure;
+  }
+  for (const std::string& name : substituted) {
+    printOut(QStringLiteral("no --%1 map: its neutral value %2 was used\n")
+                 .arg(QString::fromStdString(name))
+                 .arg(double(core::neutralMapValue(name).value_or(0.0f))));
+  }
+  return kExitOk;
+}
+
 // Parses the generator's own command line (argv[2] is its name).
 std::optional<int> parseGenerator(QCommandLineParser& parser, const core::GeneratorInfo& info,
                                   const QStringList& arguments) {
@@ -127,7 +239,9 @@ std::optional<int> parseGenerator(QCommandLineParser& parser, const core::Genera
   withoutGenerator.removeAt(2);
   const QString usage = QStringLiteral("relief-cli generate %1 ").arg(qstr(info.name)) +
                         (info.kind == core::GeneratorKind::Pack
-                             ? QStringLiteral("--normal N --height H --out NH [options]")
+                             ? QStringLiteral("--normal N --height H --out NH [options], or "
+                                              "--layout NAME [--ao F --roughness F ...] [--r "
+                                              "TERM ...] --out FILE")
                              : QStringLiteral("--in FILE --out FILE [options]"));
   if (auto exit = parseOrExit(parser, withoutGenerator, usage))
     return exit;
@@ -168,6 +282,10 @@ int runGenerate(const QStringList& arguments) {
   QCommandLineParser parser;
   if (auto exit = parseGenerator(parser, info, arguments))
     return *exit;
+  if (*kind == core::GeneratorKind::Pack) {
+    if (auto exit = runChannelPack(parser))
+      return *exit;
+  }
   core::GeneratorValues values;
   std::vector<core::Image> images;
   if (auto exit = parseValues(parser, info, values))

@@ -1,12 +1,15 @@
 // Channel packing: the height into the normal map's alpha (references 001 and 003: one RGBA
-// texture, one fetch), any channel swizzle between maps, and auto-levels for heights with the
-// applied range recorded so the material's height scale can compensate.
+// texture, one fetch), any map channel or constant into any channel (the ORM and Unity mask-map
+// layouts engines read among the named layouts), and auto-levels for heights with the applied
+// range recorded so the material's height scale can compensate.
 #pragma once
 
 #include "core/base/Result.h"
 #include "core/image/Image.h"
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace relief::core::inline generators {
@@ -32,10 +35,43 @@ HeightCompensation compensateLevels(const LevelsRange& range, double heightScale
 // The normal map's RGB with the height in A.
 Image packHeightIntoNormalAlpha(const Image& normals, const Image& height);
 
-// Builds an image from named inputs by a swizzle such as "n.r n.g n.b h.r" (one term per output
-// channel: input letter, dot, channel r/g/b/a, or the constants 0 and 1). `names` are the input
-// letters in the order of `inputs`; all inputs must have the same size.
+// One input of a channel pack: a map by the name terms use for it ("ao", "n").
+struct NamedMap {
+  std::string name;
+  const Image* image = nullptr;
+};
+
+// Builds an image of 1 to 4 channels, one term per output channel: "NAME.c" (channel c, one of
+// r g b a, of the input called NAME), "1-NAME.c" (its inverse, e.g. smoothness from roughness)
+// or a constant in 0..1 ("0", "0.5", "1"). A grey input's g and b read its only channel and a
+// missing alpha reads 1. All inputs must have the same size; the result is linear data.
+Result<Image> packChannels(const std::vector<NamedMap>& inputs,
+                           const std::vector<std::string>& terms);
+
+// The same from one-letter input names and a space-separated swizzle ("n.r n.g n.b h.r");
+// `names` holds the letters in the order of `inputs` (relief-cli generate pack --swizzle).
 Result<Image> swizzleChannels(const std::vector<const Image*>& inputs, const std::string& names,
                               const std::string& swizzle);
+
+// Channel layouts engines read, declared once for the CLI (generate pack --layout) and the
+// engine exports. Terms name maps by their slot names ("ao", "roughness", "normal", "height",
+// "color") or "metallic"; a map the material lacks is replaced by its neutral value (AO 1,
+// roughness 1, metallic 0, height 0).
+struct PackLayout {
+  std::string_view name;  // relief-cli generate pack --layout <name>
+  std::string_view label;
+  std::string_view description;
+  std::vector<std::string_view> terms;
+};
+const std::vector<PackLayout>& packLayouts();
+const PackLayout* findPackLayout(std::string_view name);
+// The neutral value a missing map stands for, or nullopt for a name no layout uses.
+std::optional<float> neutralMapValue(std::string_view name);
+
+// Resolves a layout's terms against the maps at hand: terms naming a missing map become its
+// neutral value (the inverse for "1-" terms). `substituted` receives the names replaced.
+std::vector<std::string> resolveLayoutTerms(const PackLayout& layout,
+                                            const std::vector<NamedMap>& available,
+                                            std::vector<std::string>* substituted = nullptr);
 
 }  // namespace relief::core::inline generators

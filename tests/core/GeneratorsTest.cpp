@@ -375,6 +375,58 @@ TEST(Generators, PackingPutsTheLevelledHeightInAlphaAndTheMaterialCanCompensate)
   EXPECT_FALSE(swizzleChannels({&normals, &height}, "nh", "n.q").ok());
 }
 
+// Any map channel, inverse or constant into any channel; the named layouts put each map where
+// the engines' documentation says (glTF 2.0 / Unreal ORM: R occlusion, G roughness, B metallic;
+// Unity HDRP mask map: R metallic, G occlusion, B detail mask, A smoothness = 1 - roughness),
+// with neutral values for the maps a material lacks.
+TEST(Generators, ChannelPackingPutsEveryMapWhereTheLayoutSays) {
+  Image ao(8, 4, 1), roughness(8, 4, 1), colour(8, 4, 3);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      ao.at(x, y, 0) = 0.1f * float(x);
+      roughness.at(x, y, 0) = 0.05f * float(y + x);
+      for (int c = 0; c < 3; ++c)
+        colour.at(x, y, c) = 0.01f * float(10 * c + x);
+    }
+  }
+  const std::vector<NamedMap> maps = {{"ao", &ao}, {"roughness", &roughness}, {"color", &colour}};
+  Result<Image> custom = packChannels(maps, {"color.b", "1-roughness.r", "0.25", "ao.g"});
+  ASSERT_TRUE(custom.ok()) << custom.error();
+  ASSERT_EQ(custom->channels(), 4);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      EXPECT_FLOAT_EQ(custom->at(x, y, 0), colour.at(x, y, 2));
+      EXPECT_FLOAT_EQ(custom->at(x, y, 1), 1.0f - roughness.at(x, y, 0));
+      EXPECT_FLOAT_EQ(custom->at(x, y, 2), 0.25f);
+      EXPECT_FLOAT_EQ(custom->at(x, y, 3), ao.at(x, y, 0));  // a grey map's g is its only channel
+    }
+  }
+  EXPECT_FALSE(packChannels(maps, {"ao.r", "1.5"}).ok());            // constant outside 0..1
+  EXPECT_FALSE(packChannels(maps, {"metallic.r"}).ok());             // no such map
+  EXPECT_FALSE(packChannels(maps, {"ao.x"}).ok());                   // no such channel
+  EXPECT_FALSE(packChannels(maps, {"0", "0", "0", "0", "0"}).ok());  // five channels
+  Image small(4, 4, 1);
+  EXPECT_FALSE(packChannels({{"ao", &ao}, {"small", &small}}, {"ao.r", "small.r"}).ok());
+
+  std::vector<std::string> substituted;
+  const std::vector<std::string> mask =
+      resolveLayoutTerms(*findPackLayout("unity-mask"), maps, &substituted);
+  EXPECT_EQ(mask, (std::vector<std::string>{"0", "ao.r", "1", "1-roughness.r"}));
+  EXPECT_EQ(substituted, std::vector<std::string>{"metallic"});
+  Result<Image> packed = packChannels(maps, mask);
+  ASSERT_TRUE(packed.ok()) << packed.error();
+  EXPECT_FLOAT_EQ(packed->at(3, 2, 0), 0.0f);
+  EXPECT_FLOAT_EQ(packed->at(3, 2, 1), ao.at(3, 2, 0));
+  EXPECT_FLOAT_EQ(packed->at(3, 2, 2), 1.0f);
+  EXPECT_FLOAT_EQ(packed->at(3, 2, 3), 1.0f - roughness.at(3, 2, 0));
+  // ORM without maps: occlusion 1, roughness 1, metallic 0; a flat normal is (0.5, 0.5, 1).
+  EXPECT_EQ(resolveLayoutTerms(*findPackLayout("orm"), {}),
+            (std::vector<std::string>{"1", "1", "0"}));
+  EXPECT_EQ(resolveLayoutTerms(*findPackLayout("normal-height"), {}),
+            (std::vector<std::string>{"0.5", "0.5", "1", "0"}));
+  EXPECT_EQ(findPackLayout("nope"), nullptr);
+}
+
 TEST(Generators, BadInputWarnsOrFailsClearlyButNeverCrashes) {
   // A colour "photograph" given as a normal map: a warning, and the generator still runs.
   Image photo(64, 64, 3, ColorSpace::Srgb);
