@@ -17,6 +17,23 @@ void printOut(const QString& text) {
   std::fflush(stdout);
 }
 
+namespace {
+bool g_quiet = false;  // set once by main() before any command runs
+}  // namespace
+
+void setQuiet(bool quiet) {
+  g_quiet = quiet;
+}
+
+bool quiet() {
+  return g_quiet;
+}
+
+void printNote(const QString& text) {
+  if (!g_quiet)
+    printOut(text);
+}
+
 void printError(const QString& text) {
   std::fprintf(stderr, "relief-cli: %s\n", text.toLocal8Bit().constData());
 }

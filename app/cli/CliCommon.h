@@ -21,6 +21,11 @@ constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
 
 void printOut(const QString& text);
+// --quiet (any command): informational lines (what was written, notes) are not printed; results
+// a command was asked for (info, --json, metrics) and errors and warnings on stderr still are.
+void setQuiet(bool quiet);
+bool quiet();
+void printNote(const QString& text);  // printOut unless --quiet
 // Core's names and labels (UTF-8 string views) as QStrings.
 inline QString qstr(std::string_view text) {
   return QString::fromUtf8(text.data(), qsizetype(text.size()));

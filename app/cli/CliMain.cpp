@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstring>
+#include <vector>
 
 namespace {
 
@@ -56,12 +57,29 @@ QString usage() {
   }
   return text + QStringLiteral(
                     "\nRun 'relief-cli <command> --help' for a command's options, "
-                    "'relief-cli --version' for the version and the samples' folder.\n");
+                    "'relief-cli --version' for the version and the samples' folder.\n"
+                    "Any command takes --quiet (-q): no informational lines, only results, "
+                    "warnings and errors.\nLong commands draw a progress line when standard "
+                    "error is a terminal.\nExit codes: 0 success, 1 the work failed (the "
+                    "message names the file), 2 a wrong command line.\n");
 }
 
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  // --quiet (or -q) anywhere on the line applies to every command; it is taken out before the
+  // command parses the rest.
+  std::vector<char*> kept;
+  for (int i = 0; i < argc; ++i) {
+    if (i > 0 && (std::strcmp(argv[i], "--quiet") == 0 || std::strcmp(argv[i], "-q") == 0)) {
+      setQuiet(true);
+      continue;
+    }
+    kept.push_back(argv[i]);
+  }
+  argc = int(kept.size());
+  kept.push_back(nullptr);
+  argv = kept.data();
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0 ||
       std::strcmp(argv[1], "help") == 0) {
     printOut(usage());

@@ -2,6 +2,7 @@
 #include "CompressCommand.h"
 
 #include "CliCommon.h"
+#include "TerminalProgress.h"
 #include "core/compression/CompressionJob.h"
 #include "core/compression/MapFile.h"
 #include "core/compression/TextureFile.h"
@@ -203,7 +204,11 @@ int runCompress(const QStringList& arguments) {
   if (auto exit = buildJob(parser, job, outPath))
     return *exit;
   const QString inPath = parser.value(QStringLiteral("in"));
-  core::Result<core::CompressionOutcome> outcome = core::runCompressionJob(job);
+  core::Result<core::CompressionOutcome> outcome = [&] {
+    TerminalProgress progress(QStringLiteral("compress ") +
+                              QFileInfo(parser.value(QStringLiteral("in"))).fileName());
+    return core::runCompressionJob(job, progress.control());
+  }();
   if (!outcome) {
     printError(inPath + QStringLiteral(": ") + QString::fromStdString(outcome.error()));
     return kExitFailure;
@@ -217,16 +222,16 @@ int runCompress(const QStringList& arguments) {
     return kExitFailure;
   }
   if (!job.measure) {
-    printOut(QStringLiteral("%1: %2, %3x%4, %5 level(s), %6 bytes of blocks, %7 bytes on disk, "
-                            "%8 s\n")
-                 .arg(QString::fromStdString(outPath),
-                      qstr(core::textureFormatInfo(job.settings.format).label))
-                 .arg(job.map->width())
-                 .arg(job.map->height())
-                 .arg(texture.levels.size())
-                 .arg(texture.byteSize())
-                 .arg(QFileInfo(QString::fromStdString(outPath)).size())
-                 .arg(outcome->report.encodeSeconds, 0, 'f', 2));
+    printNote(QStringLiteral("%1: %2, %3x%4, %5 level(s), %6 bytes of blocks, %7 bytes on disk, "
+                             "%8 s\n")
+                  .arg(QString::fromStdString(outPath),
+                       qstr(core::textureFormatInfo(job.settings.format).label))
+                  .arg(job.map->width())
+                  .arg(job.map->height())
+                  .arg(texture.levels.size())
+                  .arg(texture.byteSize())
+                  .arg(QFileInfo(QString::fromStdString(outPath)).size())
+                  .arg(outcome->report.encodeSeconds, 0, 'f', 2));
   } else if (parser.value(QStringLiteral("metrics")) == QStringLiteral("json")) {
     printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(outcome->report)).toJson()));
   } else {
@@ -275,7 +280,7 @@ int runDecode(const QStringList& arguments) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
   }
-  printOut(
+  printNote(
       QStringLiteral("%1: %2 %3x%4 level %5 of %6\n")
           .arg(QString::fromStdString(out), qstr(core::textureFormatInfo(texture->format).label))
           .arg(image->width())

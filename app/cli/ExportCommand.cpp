@@ -3,6 +3,7 @@
 #include "ExportCommand.h"
 
 #include "CliCommon.h"
+#include "TerminalProgress.h"
 #include "core/exporters/Exporter.h"
 
 namespace relief::cli {
@@ -101,14 +102,18 @@ int runExport(const QStringList& arguments) {
   core::ExportRequest request;
   if (auto exit = buildRequest(parser, request))
     return *exit;
-  core::Result<core::ExportResult> written = core::exportMaterial(request);
+  core::Result<core::ExportResult> written = [&] {
+    TerminalProgress progress(QStringLiteral("export ") +
+                              qstr(core::exportKindInfo(request.kind).name));
+    return core::exportMaterial(request, progress.control());
+  }();
   if (!written) {
     printError(QString::fromStdString(written.error()));
     return kExitFailure;
   }
-  printOut(QStringLiteral("wrote %1\n").arg(QString::fromStdString(written->writtenPath)));
+  printNote(QStringLiteral("wrote %1\n").arg(QString::fromStdString(written->writtenPath)));
   for (const std::string& note : written->notes)
-    printOut(QStringLiteral("note: %1\n").arg(QString::fromStdString(note)));
+    printNote(QStringLiteral("note: %1\n").arg(QString::fromStdString(note)));
   return kExitOk;
 }
 

@@ -2,6 +2,7 @@
 #include "GenerateCommand.h"
 
 #include "CliCommon.h"
+#include "TerminalProgress.h"
 #include "core/compression/MapFile.h"
 #include "core/generators/Generators.h"
 #include "core/image/ImageIO.h"
@@ -221,9 +222,9 @@ std::optional<int> runChannelPack(const QCommandLineParser& parser) {
     return kExitFailure;
   }
   for (const std::string& name : substituted) {
-    printOut(QStringLiteral("no --%1 map: its neutral value %2 was used\n")
-                 .arg(QString::fromStdString(name))
-                 .arg(double(core::neutralMapValue(name).value_or(0.0f))));
+    printNote(QStringLiteral("no --%1 map: its neutral value %2 was used\n")
+                  .arg(QString::fromStdString(name))
+                  .arg(double(core::neutralMapValue(name).value_or(0.0f))));
   }
   return kExitOk;
 }
@@ -296,7 +297,10 @@ int runGenerate(const QStringList& arguments) {
   for (const core::Image& image : images)
     inputs.push_back(&image);
 
-  core::Result<core::GeneratedMap> result = core::runGenerator({*kind, inputs, values, 1.0});
+  core::Result<core::GeneratedMap> result = [&] {
+    TerminalProgress progress(QStringLiteral("generate ") + qstr(info.name));
+    return core::runGenerator({*kind, inputs, values, 1.0}, progress.control());
+  }();
   if (!result) {
     printError(QStringLiteral("generate %1: ").arg(qstr(info.name)) +
                QString::fromStdString(result.error()));
@@ -315,7 +319,7 @@ int runGenerate(const QStringList& arguments) {
     return kExitFailure;
   }
   for (const std::string& note : result->notes) {
-    printOut(QString::fromStdString(note) + QLatin1Char('\n'));
+    printNote(QString::fromStdString(note) + QLatin1Char('\n'));
   }
   return kExitOk;
 }

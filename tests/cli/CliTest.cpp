@@ -402,6 +402,57 @@ TEST(Cli, PackLayoutsPutEachMapInItsChannel) {
   EXPECT_NE(bad.err.find("no map called 'metal'"), std::string::npos) << bad.err;
 }
 
+// Scriptable output: piped, a long command prints its result line and no progress; --quiet
+// (anywhere on the line) drops the informational lines but not the results asked for (JSON
+// metrics) nor errors; on a terminal (util-linux's script gives one) the progress line is drawn
+// on standard error and erased before the result.
+TEST(Cli, ProgressOnlyOnATerminalAndQuietOnlyResults) {
+  const std::string folder = scratchFolder();
+  const QString colour = q(sourcePath("samples/bricks/bricks_color.png"));
+  const QStringList compress = {
+      QStringLiteral("compress"), QStringLiteral("--in"), colour,
+      QStringLiteral("--format"), QStringLiteral("bc1"),  QStringLiteral("--out"),
+      q(folder + "/c.dds")};
+  CliRun piped = runCli(compress);
+  ASSERT_EQ(piped.exitCode, 0) << piped.err;
+  EXPECT_NE(piped.out.find("c.dds: BC1"), std::string::npos) << piped.out;
+  EXPECT_EQ(piped.err.find('\r'), std::string::npos) << piped.err;
+  EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
+
+  CliRun quiet = runCli(QStringList{QStringLiteral("--quiet")} + compress);
+  EXPECT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_EQ(quiet.out, "");
+  CliRun quietJson =
+      runCli(compress + QStringList{QStringLiteral("-q"), QStringLiteral("--metrics"),
+                                    QStringLiteral("json")});
+  EXPECT_EQ(quietJson.exitCode, 0) << quietJson.err;
+  EXPECT_TRUE(QJsonDocument::fromJson(QByteArray::fromStdString(quietJson.out)).isObject())
+      << quietJson.out;
+  CliRun quietError =
+      runCli({QStringLiteral("-q"), QStringLiteral("compress"), QStringLiteral("--in"),
+              q(folder + "/missing.png"), QStringLiteral("--format"), QStringLiteral("bc1"),
+              QStringLiteral("--out"), q(folder + "/m.dds")});
+  EXPECT_EQ(quietError.exitCode, 1);
+  EXPECT_NE(quietError.err.find("missing.png"), std::string::npos) << quietError.err;
+
+  // A terminal: `script -qec COMMAND /dev/null` runs COMMAND on a pseudo-terminal and copies
+  // what it prints (stdout and stderr alike) to its own standard output.
+  QProcess script;
+  QStringList command = {QStringLiteral(RELIEF_CLI_PATH)};
+  command += compress;
+  script.start(QStringLiteral("script"), {QStringLiteral("-qec"), command.join(QLatin1Char(' ')),
+                                          QStringLiteral("/dev/null")});
+  if (!script.waitForStarted(10000))
+    GTEST_SKIP() << "util-linux's script is not installed: no pseudo-terminal to test with";
+  ASSERT_TRUE(script.waitForFinished(120000));
+  EXPECT_EQ(script.exitCode(), 0);
+  const std::string terminal = script.readAllStandardOutput().toStdString();
+  EXPECT_NE(terminal.find("compress bricks_color.png ["), std::string::npos) << terminal;
+  EXPECT_NE(terminal.find("100%"), std::string::npos) << terminal;
+  EXPECT_NE(terminal.find("\r\033[K"), std::string::npos) << terminal;  // erased
+  EXPECT_NE(terminal.find("c.dds: BC1"), std::string::npos) << terminal;
+}
+
 TEST(Cli, GenerateExplainsWhatIsWrong) {
   const std::string folder = scratchFolder();
   const QString height = q(sourcePath("samples/tiles/tiles_height.png"));
