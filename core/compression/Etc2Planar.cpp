@@ -5,6 +5,7 @@
 // per channel), quantised, then each stored value nudged a step while the error falls, every
 // candidate judged by decoding it with decodeEtc2Rgb, the decoder the GPU check tests.
 #include "core/compression/BlockCodecs.h"
+#include "core/compression/Etc2BlockBits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,46 +20,29 @@ struct Plane {
 
 constexpr int kBits[3] = {6, 7, 6};
 
-void put(std::uint64_t& word, int value, int high, int low) {
-  const int width = high - low + 1;
-  word |= std::uint64_t(value & ((1 << width) - 1)) << low;
-}
-
 // The block: the colours at the bit positions the decoder reads, bit 33 (differential) set,
 // and the free bits chosen so that red and green stay in range and blue overflows, which is
 // what selects planar mode.
 void pack(const Plane& p, std::uint8_t out[8]) {
   std::uint64_t word = std::uint64_t(1) << 33;
-  put(word, p.o[0], 62, 57);
-  put(word, p.o[1] >> 6, 56, 56);
-  put(word, p.o[1], 54, 49);
-  put(word, p.o[2] >> 5, 48, 48);
-  put(word, p.o[2] >> 3, 44, 43);
-  put(word, p.o[2], 41, 39);
-  put(word, p.h[0] >> 1, 38, 34);
-  put(word, p.h[0], 32, 32);
-  put(word, p.h[1], 31, 25);
-  put(word, p.h[2], 24, 19);
-  put(word, p.v[0], 18, 13);
-  put(word, p.v[1], 12, 6);
-  put(word, p.v[2], 5, 0);
-  // Red: five bits 63..59 plus a delta in 58..56 must stay in 0..31 (else T mode). With bit 63
-  // set when bits 62..59 are below 8 the five bits are 16..23, else 8..15: in range whatever
-  // the delta (-4..3). Green likewise with bit 55 over bits 54..51 (else H mode).
-  if (((word >> 59) & 15) < 8)
-    word |= std::uint64_t(1) << 63;
-  if (((word >> 51) & 15) < 8)
-    word |= std::uint64_t(1) << 55;
-  // Blue must leave 0..31: bits 47..45 and 42 are free. With F = bits 44..43 and D = bits
-  // 41..40, five bits 111FF plus delta 0DD is 28 + F + D (over 31 when F + D >= 4), and five
-  // bits 000FF plus delta 1DD is F + D - 4 (negative otherwise).
-  const int f = int((word >> 43) & 3), d = int((word >> 40) & 3);
-  if (f + d >= 4)
-    word |= std::uint64_t(7) << 45;
-  else
-    word |= std::uint64_t(1) << 42;
-  for (int i = 0; i < 8; ++i)
-    out[i] = std::uint8_t(word >> (56 - 8 * i));
+  putBits(word, p.o[0], 62, 57);
+  putBits(word, p.o[1] >> 6, 56, 56);
+  putBits(word, p.o[1], 54, 49);
+  putBits(word, p.o[2] >> 5, 48, 48);
+  putBits(word, p.o[2] >> 3, 44, 43);
+  putBits(word, p.o[2], 41, 39);
+  putBits(word, p.h[0] >> 1, 38, 34);
+  putBits(word, p.h[0], 32, 32);
+  putBits(word, p.h[1], 31, 25);
+  putBits(word, p.h[2], 24, 19);
+  putBits(word, p.v[0], 18, 13);
+  putBits(word, p.v[1], 12, 6);
+  putBits(word, p.v[2], 5, 0);
+  // Red and green stay in range (else T or H mode), blue leaves it: planar (Etc2BlockBits.h).
+  keepDifferentialInRange(word, 63);
+  keepDifferentialInRange(word, 55);
+  forceDifferentialOverflow(word, 43, 42);
+  storeBigEndian(word, out);
 }
 
 float errorOf(const Plane& p, const float rgb[16][3], int validMask, std::uint8_t out[8]) {

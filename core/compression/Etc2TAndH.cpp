@@ -8,6 +8,7 @@
 // group's mean after its offsets are taken out) while the error falls. Every candidate is
 // judged with the decoder's own clamping, and the packed winner by decodeEtc2Rgb itself.
 #include "core/compression/BlockCodecs.h"
+#include "core/compression/Etc2BlockBits.h"
 
 #include <algorithm>
 #include <array>
@@ -116,24 +117,8 @@ bool expressible(const Candidate& c) {
   return !c.hMode || colourKey(c.c1) != colourKey(c.c2) || (c.distance & 1) == 1;
 }
 
-void put(std::uint64_t& word, int value, int high, int low) {
-  const int width = high - low + 1;
-  word |= std::uint64_t(value & ((1 << width) - 1)) << low;
-}
-
-// Bit layouts as the decoder reads them (EtcCodec.cpp). The free bits are set so that the
-// differential red (T) or green (H) of the ETC1 reading leaves 0..31, which is what selects the
-// mode: with two known bits x at the top's low end and two known bits y in the delta, the
-// five bits 111xx plus the delta 0yy make 28 + x + y (over 31 when x + y >= 4), and 000xx plus
-// 1yy make x + y - 4 (negative otherwise). The same trick selects planar mode (Etc2Planar.cpp).
-void setOverflow(std::uint64_t& word, int fiveLow, int deltaHigh) {
-  const int x = int((word >> fiveLow) & 3), y = int((word >> (deltaHigh - 2)) & 3);
-  if (x + y >= 4)
-    word |= std::uint64_t(7) << (fiveLow + 2);
-  else
-    word |= std::uint64_t(1) << deltaHigh;
-}
-
+// Bit layouts as the decoder reads them (EtcCodec.cpp); the free bits select the mode
+// (Etc2BlockBits.h).
 void pack(Candidate c, int index[16], std::uint8_t out[8]) {
   std::uint64_t word = std::uint64_t(1) << 33;
   if (c.hMode) {
@@ -142,40 +127,37 @@ void pack(Candidate c, int index[16], std::uint8_t out[8]) {
       for (int t = 0; t < 16; ++t)
         index[t] ^= 2;
     }
-    put(word, c.c1[0], 62, 59);
-    put(word, c.c1[1] >> 1, 58, 56);
-    put(word, c.c1[1], 52, 52);
-    put(word, c.c1[2] >> 3, 51, 51);
-    put(word, c.c1[2], 49, 47);
-    put(word, c.c2[0], 46, 43);
-    put(word, c.c2[1], 42, 39);
-    put(word, c.c2[2], 38, 35);
-    put(word, c.distance >> 2, 34, 34);
-    put(word, c.distance >> 1, 32, 32);
-    // Red stays in range: bit 63 over bits 62..59 makes the five bits 8..23 whatever the delta.
-    if (((word >> 59) & 15) < 8)
-      word |= std::uint64_t(1) << 63;
-    setOverflow(word, 51, 50);  // green leaves 0..31
+    putBits(word, c.c1[0], 62, 59);
+    putBits(word, c.c1[1] >> 1, 58, 56);
+    putBits(word, c.c1[1], 52, 52);
+    putBits(word, c.c1[2] >> 3, 51, 51);
+    putBits(word, c.c1[2], 49, 47);
+    putBits(word, c.c2[0], 46, 43);
+    putBits(word, c.c2[1], 42, 39);
+    putBits(word, c.c2[2], 38, 35);
+    putBits(word, c.distance >> 2, 34, 34);
+    putBits(word, c.distance >> 1, 32, 32);
+    keepDifferentialInRange(word, 63);        // red stays in 0..31
+    forceDifferentialOverflow(word, 51, 50);  // green leaves it: H mode
   } else {
-    put(word, c.c1[0] >> 2, 60, 59);
-    put(word, c.c1[0], 57, 56);
-    put(word, c.c1[1], 55, 52);
-    put(word, c.c1[2], 51, 48);
-    put(word, c.c2[0], 47, 44);
-    put(word, c.c2[1], 43, 40);
-    put(word, c.c2[2], 39, 36);
-    put(word, c.distance >> 1, 35, 34);
-    put(word, c.distance, 32, 32);
-    setOverflow(word, 59, 58);  // red leaves 0..31
+    putBits(word, c.c1[0] >> 2, 60, 59);
+    putBits(word, c.c1[0], 57, 56);
+    putBits(word, c.c1[1], 55, 52);
+    putBits(word, c.c1[2], 51, 48);
+    putBits(word, c.c2[0], 47, 44);
+    putBits(word, c.c2[1], 43, 40);
+    putBits(word, c.c2[2], 39, 36);
+    putBits(word, c.distance >> 1, 35, 34);
+    putBits(word, c.distance, 32, 32);
+    forceDifferentialOverflow(word, 59, 58);  // red leaves 0..31: T mode
   }
   // Texel (x, y) keeps its index's high bit at 16 + x * 4 + y and its low bit at x * 4 + y.
   for (int t = 0; t < 16; ++t) {
     const int bit = (t % 4) * 4 + t / 4;
-    put(word, index[t] >> 1, 16 + bit, 16 + bit);
-    put(word, index[t], bit, bit);
+    putBits(word, index[t] >> 1, 16 + bit, 16 + bit);
+    putBits(word, index[t], bit, bit);
   }
-  for (int i = 0; i < 8; ++i)
-    out[i] = std::uint8_t(word >> (56 - 8 * i));
+  storeBigEndian(word, out);
 }
 
 // Two groups of texels: the splits along the principal axis (the texels sorted by their

@@ -488,6 +488,20 @@ TEST(CompressionQualityTest, NormalFormatsMeetTheirFloors) {
   EXPECT_LT(bc5, bc1);
 }
 
+// One ETC block encoded and decoded again: its largest colour error in 8-bit steps.
+float worstEtcError(const BlockTexels& texels, TextureFormat format, CompressionQuality quality,
+                    std::uint8_t block[8]) {
+  encodeEtcBlock(format, quality, texels, 0xFFFF, block);
+  BlockTexels decoded;
+  decodeEtcBlock(format, block, decoded);
+  float worst = 0.0f;
+  for (int t = 0; t < 16; ++t) {
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(decoded[t][c] - texels[t][c]) * 255.0f);
+  }
+  return worst;
+}
+
 // ETC2's planar mode: a smooth gradient, which ETC1 can only band, comes back within a step or
 // two as a planar block (differential bit set, red and green in range, blue overflowing:
 // OpenGL ES 3.0 C.1.5); and on photographs ETC2 RGB (planar, T and H modes at quality normal)
@@ -503,15 +517,7 @@ TEST(CompressionQualityTest, Etc2PlanarModeTakesGradients) {
     texels[t][3] = 1.0f;
   }
   const auto worstAfter = [&](TextureFormat format, std::uint8_t block[8]) {
-    encodeEtcBlock(format, CompressionQuality::Normal, texels, 0xFFFF, block);
-    BlockTexels decoded;
-    decodeEtcBlock(format, block, decoded);
-    float worst = 0.0f;
-    for (int t = 0; t < 16; ++t) {
-      for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(decoded[t][c] - texels[t][c]) * 255.0f);
-    }
-    return worst;
+    return worstEtcError(texels, format, CompressionQuality::Normal, block);
   };
   std::uint8_t etc1[8], etc2[8];
   const float etc1Worst = worstAfter(TextureFormat::Etc1, etc1);
@@ -562,18 +568,6 @@ TEST(CompressionQualityTest, Etc2TAndHModesTakeTwoColourBlocks) {
       texels[t][3] = 1.0f;
     }
   };
-  const auto encodeAndMeasure = [](const BlockTexels& texels, TextureFormat format,
-                                   CompressionQuality quality, std::uint8_t block[8]) {
-    encodeEtcBlock(format, quality, texels, 0xFFFF, block);
-    BlockTexels decoded;
-    decodeEtcBlock(format, block, decoded);
-    float worst = 0.0f;
-    for (int t = 0; t < 16; ++t) {
-      for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(decoded[t][c] - texels[t][c]) * 255.0f);
-    }
-    return worst;
-  };
   // T: a lone colour c1 = (14, 1, 6) x 17 and the line c2 = (4, 8, 4) x 17 with c2 +- 11
   // (distance index 2). H: c1 = (3, 10, 5) x 17 and c2 = (12, 2, 7) x 17, each +- 23 (index
   // 4, even: the order bit must be 0, so c1 < c2 as 12-bit numbers) and +- 32 (index 5, odd).
@@ -587,8 +581,8 @@ TEST(CompressionQualityTest, Etc2TAndHModesTakeTwoColourBlocks) {
     fillBlock(paint, texels);
     for (CompressionQuality quality : {CompressionQuality::Normal, CompressionQuality::Best}) {
       std::uint8_t etc1[8], etc2[8];
-      const float etc1Worst = encodeAndMeasure(texels, TextureFormat::Etc1, quality, etc1);
-      const float etc2Worst = encodeAndMeasure(texels, TextureFormat::Etc2, quality, etc2);
+      const float etc1Worst = worstEtcError(texels, TextureFormat::Etc1, quality, etc1);
+      const float etc2Worst = worstEtcError(texels, TextureFormat::Etc2, quality, etc2);
       EXPECT_EQ(etc2Worst, 0.0f) << "paint " << paint[0][0];
       EXPECT_EQ(etc2Mode(etc2), mode) << "paint " << paint[0][0];
       EXPECT_GT(etc1Worst, 10.0f);
@@ -602,9 +596,9 @@ TEST(CompressionQualityTest, Etc2TAndHModesTakeTwoColourBlocks) {
   fillBlock(hues, texels);
   std::uint8_t etc1[8], etc2[8];
   const float etc1Worst =
-      encodeAndMeasure(texels, TextureFormat::Etc1, CompressionQuality::Normal, etc1);
+      worstEtcError(texels, TextureFormat::Etc1, CompressionQuality::Normal, etc1);
   const float etc2Worst =
-      encodeAndMeasure(texels, TextureFormat::Etc2, CompressionQuality::Normal, etc2);
+      worstEtcError(texels, TextureFormat::Etc2, CompressionQuality::Normal, etc2);
   std::printf("measured two hues: ETC1 worst %.0f, ETC2 worst %.0f\n", etc1Worst, etc2Worst);
   EXPECT_LE(etc2Worst, 9.0f);
   EXPECT_GT(etc1Worst, 4.0f * etc2Worst);
