@@ -23,9 +23,9 @@ QString generatorList() {
   return text;
 }
 
-// pack: the maps that --layout and the channel terms can name, and the channel options.
-constexpr const char* kPackMapOptions[] = {"color", "normal",    "height",
-                                           "ao",    "roughness", "metallic"};
+// pack's extras on the command line: maps that no slot holds yet (metallic) or that only the
+// channel terms use (color), and the channel terms; pack's own inputs come from core's table.
+constexpr const char* kPackExtraMaps[] = {"color", "metallic"};
 constexpr const char* kChannelOptions[] = {"r", "g", "b", "a"};
 
 // The generator's options: its inputs, --out, its OptionSpecs (core's table) and pack's swizzle.
@@ -47,26 +47,11 @@ CliOptions generatorOptions(const core::GeneratorInfo& info) {
                        {}});
   }
   if (info.kind == core::GeneratorKind::Pack) {
-    QStringList layouts;
-    for (const core::PackLayout& layout : core::packLayouts())
-      layouts << qstr(layout.name) + QStringLiteral(" (") + qstr(layout.description) +
-                     QLatin1Char(')');
-    options.push_back({QStringLiteral("layout"),
-                       QStringLiteral("name"),
-                       QStringLiteral("A channel layout from any maps instead of height in "
-                                      "normal alpha: ") +
-                           layouts.join(QStringLiteral("; ")) +
-                           QStringLiteral(". Maps not given take their neutral value (AO 1, "
-                                          "roughness 1, metallic 0)."),
-                       {}});
-    for (const char* slot : kPackMapOptions) {
-      if (QLatin1String(slot) == QLatin1String("normal") ||
-          QLatin1String(slot) == QLatin1String("height"))
-        continue;  // the generator's own inputs, above
-      options.push_back({QLatin1String(slot),
+    for (const char* map : kPackExtraMaps) {
+      options.push_back({QLatin1String(map),
                          QStringLiteral("file"),
                          QStringLiteral("The %1 map, for --layout and the channel terms.")
-                             .arg(QLatin1String(slot)),
+                             .arg(QLatin1String(map)),
                          {}});
     }
     for (const char* channel : kChannelOptions) {
@@ -115,6 +100,10 @@ std::optional<int> loadInputs(const QCommandLineParser& parser, const core::Gene
                               const core::GeneratorValues& values,
                               std::vector<core::Image>& images) {
   for (const core::GeneratorInput& input : info.inputs) {
+    if (!parser.isSet(qstr(input.name)) && input.optional) {
+      images.emplace_back();  // an empty image: not given
+      continue;
+    }
     if (!parser.isSet(qstr(input.name))) {
       printError(QStringLiteral("generate %1 needs --%2 FILE (the %3)")
                      .arg(qstr(info.name), qstr(input.name), qstr(input.label).toLower()));
@@ -157,31 +146,37 @@ std::optional<int> swizzle(const QString& terms, const core::Image& normal, core
   return std::nullopt;
 }
 
-// pack with --layout or channel terms: any map or constant into any channel. Returns nullopt
-// when neither is given (the height-into-normal-alpha generator runs as before).
-std::optional<int> runChannelPack(const QCommandLineParser& parser) {
-  const bool anyChannel =
-      std::any_of(std::begin(kChannelOptions), std::end(kChannelOptions),
-                  [&](const char* c) { return parser.isSet(QLatin1String(c)); });
-  if (!parser.isSet(QStringLiteral("layout")) && !anyChannel)
+// pack with channel terms or maps only the terms can name (--color, --metallic): any map or
+// constant into any channel, starting from --layout's terms. Returns nullopt when none of those
+// is given (core's pack generator runs, with --layout and the table's inputs).
+std::optional<int> runChannelPack(const QCommandLineParser& parser,
+                                  const core::GeneratorInfo& info) {
+  const auto given = [&](const char* option) { return parser.isSet(QLatin1String(option)); };
+  if (std::none_of(std::begin(kChannelOptions), std::end(kChannelOptions), given) &&
+      std::none_of(std::begin(kPackExtraMaps), std::end(kPackExtraMaps), given))
     return std::nullopt;
+  QStringList mapOptions;
+  for (const core::GeneratorInput& input : info.inputs)
+    mapOptions << qstr(input.name);
+  for (const char* map : kPackExtraMaps)
+    mapOptions << QLatin1String(map);
   std::vector<core::Image> images;
-  std::vector<QString> names;
-  for (const char* slot : kPackMapOptions) {
-    if (!parser.isSet(QLatin1String(slot)))
+  std::vector<std::string> names;
+  for (const QString& option : mapOptions) {
+    if (!parser.isSet(option))
       continue;
-    const QString path = parser.value(QLatin1String(slot));
+    const QString path = parser.value(option);
     core::Result<core::Image> image = core::loadMapFile(path.toStdString());
     if (!image) {
       printError(QString::fromStdString(image.error()));
       return kExitFailure;
     }
     images.push_back(std::move(image).value());
-    names.push_back(QLatin1String(slot));
+    names.push_back(option.toStdString());
   }
   std::vector<core::NamedMap> maps;
   for (std::size_t i = 0; i < images.size(); ++i)
-    maps.push_back({names[i].toStdString(), &images[i]});
+    maps.push_back({names[i], &images[i]});
   std::vector<std::string> terms;
   std::vector<std::string> substituted;
   if (parser.isSet(QStringLiteral("layout"))) {
@@ -222,7 +217,7 @@ std::optional<int> runChannelPack(const QCommandLineParser& parser) {
     return kExitFailure;
   }
   for (const std::string& name : substituted) {
-    printNote(QStringLiteral("no --%1 map: its neutral value %2 was used\n")
+    printNote(QStringLiteral("no %1 map: its neutral value %2 was used\n")
                   .arg(QString::fromStdString(name))
                   .arg(double(core::neutralMapValue(name).value_or(0.0f))));
   }
@@ -240,9 +235,9 @@ std::optional<int> parseGenerator(QCommandLineParser& parser, const core::Genera
   withoutGenerator.removeAt(2);
   const QString usage = QStringLiteral("relief-cli generate %1 ").arg(qstr(info.name)) +
                         (info.kind == core::GeneratorKind::Pack
-                             ? QStringLiteral("--normal N --height H --out NH [options], or "
-                                              "--layout NAME [--ao F --roughness F ...] [--r "
-                                              "TERM ...] --out FILE")
+                             ? QStringLiteral("[--layout NAME] [--normal F --height F --ao F "
+                                              "--roughness F --metallic F --color F] [--r TERM "
+                                              "...] --out FILE")
                              : QStringLiteral("--in FILE --out FILE [options]"));
   if (auto exit = parseOrExit(parser, withoutGenerator, usage))
     return exit;
@@ -284,7 +279,7 @@ int runGenerate(const QStringList& arguments) {
   if (auto exit = parseGenerator(parser, info, arguments))
     return *exit;
   if (*kind == core::GeneratorKind::Pack) {
-    if (auto exit = runChannelPack(parser))
+    if (auto exit = runChannelPack(parser, info))
       return *exit;
   }
   core::GeneratorValues values;
@@ -295,7 +290,7 @@ int runGenerate(const QStringList& arguments) {
     return *exit;
   std::vector<const core::Image*> inputs;
   for (const core::Image& image : images)
-    inputs.push_back(&image);
+    inputs.push_back(image.isEmpty() ? nullptr : &image);
 
   core::Result<core::GeneratedMap> result = [&] {
     TerminalProgress progress(QStringLiteral("generate ") + qstr(info.name));
@@ -308,6 +303,12 @@ int runGenerate(const QStringList& arguments) {
   }
   core::Image output = std::move(result->image);
   if (*kind == core::GeneratorKind::Pack && parser.isSet(QStringLiteral("swizzle"))) {
+    if (images.front().isEmpty() || output.channels() != 4) {
+      printError(
+          QStringLiteral("--swizzle rearranges the normal-height layout: give --normal and "
+                         "--height (or use --r, --g, --b, --a for other layouts)"));
+      return kExitUsage;
+    }
     if (auto exit = swizzle(parser.value(QStringLiteral("swizzle")), images.front(), output))
       return *exit;
   }

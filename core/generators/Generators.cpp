@@ -7,6 +7,7 @@
 #include "core/generators/HeightFromNormal.h"
 #include "core/generators/NormalFromHeight.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -22,6 +23,11 @@ OptionSpec edgeOption(int defaultValue) {
 OptionSpec conventionOption(std::string_view description) {
   return choiceOption("convention", "Normal convention", {"opengl", "directx"}, 0, description);
 }
+
+// pack's layouts in the order of its "layout" choice (names from ChannelPacking's table);
+// the first, height in normal alpha, is the default.
+constexpr std::array<std::string_view, 4> kPackLayoutChoices = {"normal-height", "orm",
+                                                                "unity-mask", "unity-metallic"};
 
 std::vector<GeneratorInfo> buildTable() {
   return {
@@ -108,14 +114,25 @@ std::vector<GeneratorInfo> buildTable() {
         conventionOption("Convention of a normal-map input."), edgeOption(0)}},
       {GeneratorKind::Pack,
        "pack",
-       "Pack height into normal alpha",
-       "One RGBA texture with the normal in RGB and the height in A (references 001 and 003).",
-       {{"normal", "Normal map", MapSlot::Normal}, {"height", "Height map", MapSlot::Height}},
+       "Pack channels",
+       "One texture from several maps, in a layout renderers read: the normal with the height "
+       "in alpha (references 001 and 003: one fetch), or ORM and Unity mask maps for engines. "
+       "Maps not given take their neutral value (AO 1, roughness 1, metallic 0).",
+       {{"normal", "Normal map", MapSlot::Normal, true},
+        {"height", "Height map", MapSlot::Height, true},
+        {"ao", "Ambient occlusion map", MapSlot::AmbientOcclusion, true},
+        {"roughness", "Roughness map", MapSlot::Roughness, true}},
        MapSlot::Normal,
-       {flagOption("autoLevels", "Auto-levels height", true,
-                   "Stretch the height to the full 0..1 range for precision; the material's "
-                   "height scale and bias are adjusted so the relief stays the same."),
-        flagOption("invertHeight", "Invert height", false, "Store depth instead of height.")}},
+       {choiceOption("layout", "Layout", {kPackLayoutChoices.begin(), kPackLayoutChoices.end()}, 0,
+                     "normal-height: the normal's RGB and the height in A. orm: R occlusion, G "
+                     "roughness, B metallic (glTF, Unreal). unity-mask: R metallic, G occlusion, "
+                     "B detail mask, A smoothness (HDRP). unity-metallic: R metallic, A "
+                     "smoothness (URP, Built-in)."),
+        flagOption("autoLevels", "Auto-levels height", true,
+                   "normal-height: stretch the height to the full 0..1 range for precision; the "
+                   "material's height scale and bias are adjusted so the relief stays the same."),
+        flagOption("invertHeight", "Invert height", false,
+                   "normal-height: store depth instead of height.")}},
   };
 }
 
@@ -132,6 +149,61 @@ std::string formatted(const char* format, double value) {
   char buffer[128];
   std::snprintf(buffer, sizeof(buffer), format, value);
   return buffer;
+}
+
+// pack: height into normal alpha (auto-levelled, the range reported so the material can keep
+// its relief), or one of ChannelPacking's layouts from whichever maps are given.
+Result<GeneratedMap> runPack(const GeneratorRequest& request, const GeneratorValues& values) {
+  const GeneratorKind kind = GeneratorKind::Pack;
+  const std::string_view layoutName =
+      kPackLayoutChoices[std::size_t(numberValue(values, kind, "layout"))];
+  const GeneratorInfo& info = generatorInfo(kind);
+  GeneratedMap result;
+  if (layoutName != "normal-height") {
+    std::vector<NamedMap> maps;
+    for (std::size_t i = 0; i < request.inputs.size(); ++i) {
+      if (request.inputs[i])
+        maps.push_back({std::string(info.inputs[i].name), request.inputs[i]});
+    }
+    std::vector<std::string> substituted;
+    const std::vector<std::string> terms =
+        resolveLayoutTerms(*findPackLayout(layoutName), maps, &substituted);
+    Result<Image> packed = packChannels(maps, terms);
+    if (!packed)
+      return makeError(packed.error());
+    result.image = std::move(packed).value();
+    for (const std::string& name : substituted) {
+      result.notes.push_back(
+          formatted(("no " + name + " map: its neutral value %g was used").c_str(),
+                    double(neutralMapValue(name).value_or(0.0f))));
+    }
+    return result;
+  }
+  if (!request.inputs[0] || !request.inputs[1])
+    return makeError("height in normal alpha needs the normal map and the height map");
+  const Image& normals = *request.inputs[0];
+  const Image& heightMap = *request.inputs[1];
+  if (heightMap.width() != normals.width() || heightMap.height() != normals.height()) {
+    return makeError("the normal map (" + std::to_string(normals.width()) + "x" +
+                     std::to_string(normals.height()) + ") and the height map (" +
+                     std::to_string(heightMap.width()) + "x" + std::to_string(heightMap.height()) +
+                     ") differ in size");
+  }
+  Image height = heightMap;
+  if (numberValue(values, kind, "invertHeight") != 0.0) {
+    for (std::size_t i = 0; i < height.pixelCount(); ++i) {
+      float& v = height.data()[i * std::size_t(height.channels())];
+      v = 1.0f - v;
+    }
+  }
+  if (numberValue(values, kind, "autoLevels") != 0.0) {
+    const LevelsRange range = autoLevels(height);
+    result.levels = range;
+    result.notes.push_back(formatted("height stretched from %.4f", range.low) +
+                           formatted(" .. %.4f to 0..1", range.high));
+  }
+  result.image = packHeightIntoNormalAlpha(normals, height);
+  return result;
 }
 
 }  // namespace
@@ -169,13 +241,19 @@ int findGeneratorOption(GeneratorKind kind, std::string_view name) {
   return -1;
 }
 
-Result<GeneratedMap> runGenerator(const GeneratorRequest& request, const WorkControl& control) {
-  const GeneratorInfo& info = generatorInfo(request.kind);
+Result<GeneratedMap> runGenerator(const GeneratorRequest& given, const WorkControl& control) {
+  const GeneratorInfo& info = generatorInfo(given.kind);
+  // Trailing optional inputs may be left out of the list.
+  GeneratorRequest request = given;
+  while (request.inputs.size() < info.inputs.size() && info.inputs[request.inputs.size()].optional)
+    request.inputs.push_back(nullptr);
   if (request.inputs.size() != info.inputs.size()) {
     return makeError(std::string(info.name) + " needs " + std::to_string(info.inputs.size()) +
                      " input(s)");
   }
   for (std::size_t i = 0; i < request.inputs.size(); ++i) {
+    if (info.inputs[i].optional && !request.inputs[i])
+      continue;
     if (!request.inputs[i] || request.inputs[i]->isEmpty()) {
       return makeError(std::string(info.name) + ": no " + std::string(info.inputs[i].label) +
                        " to generate from");
@@ -189,6 +267,8 @@ Result<GeneratedMap> runGenerator(const GeneratorRequest& request, const WorkCon
     values[i] = sanitizeOptionValue(info.options[i], values[i]);
   }
   const GeneratorKind kind = request.kind;
+  if (kind == GeneratorKind::Pack)
+    return runPack(request, values);
   const Image& input = *request.inputs.front();
   const int edgeOption = findGeneratorOption(kind, "edge");
   const EdgeMode edge =
@@ -261,30 +341,8 @@ Result<GeneratedMap> runGenerator(const GeneratorRequest& request, const WorkCon
       result.image = curvatureMap(input, options, control);
       break;
     }
-    case GeneratorKind::Pack: {
-      const Image& heightMap = *request.inputs[1];
-      if (heightMap.width() != input.width() || heightMap.height() != input.height()) {
-        return makeError("pack: the normal map (" + std::to_string(input.width()) + "x" +
-                         std::to_string(input.height()) + ") and the height map (" +
-                         std::to_string(heightMap.width()) + "x" +
-                         std::to_string(heightMap.height()) + ") differ in size");
-      }
-      Image height = heightMap;
-      if (numberValue(values, kind, "invertHeight") != 0.0) {
-        for (std::size_t i = 0; i < height.pixelCount(); ++i) {
-          float& v = height.data()[i * std::size_t(height.channels())];
-          v = 1.0f - v;
-        }
-      }
-      if (numberValue(values, kind, "autoLevels") != 0.0) {
-        const LevelsRange range = autoLevels(height);
-        result.levels = range;
-        result.notes.push_back(formatted("height stretched from %.4f", range.low) +
-                               formatted(" .. %.4f to 0..1", range.high));
-      }
-      result.image = packHeightIntoNormalAlpha(input, height);
-      break;
-    }
+    case GeneratorKind::Pack:
+      break;  // runPack, above
   }
   if (control.cancelled())
     return makeError("cancelled");

@@ -25,13 +25,14 @@ enum class GeneratorKind {
   HeightFromColor,   // height from a colour photograph
   AmbientOcclusion,  // AO from height
   Curvature,         // curvature from height or normal
-  Pack,              // height into the normal map's alpha
+  Pack,              // channel packing: height into the normal map's alpha, ORM, mask maps
 };
 
 struct GeneratorInput {
   std::string_view name;   // the CLI option (--in, --normal, --height)
   std::string_view label;  // what the GUI asks for
   MapSlot defaultSlot;     // where the GUI takes it from by default
+  bool optional = false;   // may be missing (null in GeneratorRequest::inputs)
 };
 
 struct GeneratorInfo {
@@ -56,7 +57,7 @@ int findGeneratorOption(GeneratorKind kind, std::string_view name);
 
 struct GeneratorRequest {
   GeneratorKind kind = GeneratorKind::Normal;
-  std::vector<const Image*> inputs;  // in the order of GeneratorInfo::inputs
+  std::vector<const Image*> inputs;  // in the order of GeneratorInfo::inputs; null: not given
   GeneratorValues values;            // defaults when empty
   // The inputs' size relative to the full-size map (previews run at a fraction); options in
   // texels and per-texel strengths are scaled so the preview looks like the result.
@@ -71,6 +72,7 @@ struct GeneratedMap {
 };
 
 // Runs one generator. Fails with a message for missing or mismatched inputs, or when cancelled.
+// Optional inputs may be null, and trailing ones left out of the list.
 Result<GeneratedMap> runGenerator(const GeneratorRequest& request, const WorkControl& control = {});
 
 // A warning when an image used as a normal map does not look like one (e.g. a photograph):

@@ -427,6 +427,29 @@ TEST(Generators, ChannelPackingPutsEveryMapWhereTheLayoutSays) {
   EXPECT_EQ(findPackLayout("nope"), nullptr);
 }
 
+// The pack generator in an engine layout takes any subset of its maps: the Unity mask map from
+// an AO map alone is metallic 0, occlusion, detail 1 and smoothness 0 (roughness neutral 1),
+// with notes naming the maps that were missing; height in normal alpha still needs both maps.
+TEST(Generators, PackInAnEngineLayoutTakesWhicheverMapsAreGiven) {
+  const Image ao = field(16, 8, [](int x, int, int, int) { return x / 15.0; });
+  GeneratorValues values = defaultGeneratorValues(GeneratorKind::Pack);
+  values[std::size_t(findGeneratorOption(GeneratorKind::Pack, "layout"))] = 2;  // unity-mask
+  Result<GeneratedMap> mask =
+      runGenerator({GeneratorKind::Pack, {nullptr, nullptr, &ao, nullptr}, values, 1.0});
+  ASSERT_TRUE(mask.ok()) << mask.error();
+  ASSERT_EQ(mask->image.channels(), 4);
+  for (int x = 0; x < 16; ++x) {
+    EXPECT_FLOAT_EQ(mask->image.at(x, 3, 0), 0.0f);
+    EXPECT_FLOAT_EQ(mask->image.at(x, 3, 1), ao.at(x, 3, 0));
+    EXPECT_FLOAT_EQ(mask->image.at(x, 3, 2), 1.0f);
+    EXPECT_FLOAT_EQ(mask->image.at(x, 3, 3), 0.0f);
+  }
+  ASSERT_EQ(mask->notes.size(), 2u);
+  EXPECT_NE(mask->notes[0].find("no metallic map"), std::string::npos) << mask->notes[0];
+  EXPECT_NE(mask->notes[1].find("no roughness map"), std::string::npos) << mask->notes[1];
+  EXPECT_FALSE(runGenerator({GeneratorKind::Pack, {nullptr, &ao, nullptr, nullptr}, {}, 1.0}).ok());
+}
+
 TEST(Generators, BadInputWarnsOrFailsClearlyButNeverCrashes) {
   // A colour "photograph" given as a normal map: a warning, and the generator still runs.
   Image photo(64, 64, 3, ColorSpace::Srgb);

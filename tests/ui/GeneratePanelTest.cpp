@@ -86,6 +86,33 @@ TEST_F(GeneratePanelTest, PackingKeepsTheReliefAndSwitchesToAlphaHeight) {
               1e-6);
 }
 
+// Pack's engine layouts from whatever maps the material has: the bricks sample has no AO or
+// roughness map, so its ORM is the neutral occlusion 1, roughness 1 and metallic 0 everywhere;
+// the result is saved, not applied (no slot holds an ORM map), and the status says why.
+TEST_F(GeneratePanelTest, PackingAnOrmMapUsesNeutralValuesAndIsSavedNotApplied) {
+  panel()->setGenerator(core::GeneratorKind::Pack);
+  auto* layout = qobject_cast<QComboBox*>(panel()->optionEditor("layout"));
+  ASSERT_NE(layout, nullptr);
+  layout->setCurrentIndex(1);
+  ASSERT_EQ(layout->currentText(), QStringLiteral("orm"));
+  Q_EMIT layout->activated(1);
+  ASSERT_TRUE(waitForResult());
+  const core::Image& orm = panel()->result()->image;
+  ASSERT_EQ(orm.channels(), 3);
+  EXPECT_EQ(orm.width(), 1024);
+  for (int y : {0, 511, 1023}) {
+    EXPECT_FLOAT_EQ(orm.at(y, y, 0), 1.0f);
+    EXPECT_FLOAT_EQ(orm.at(y, y, 1), 1.0f);
+    EXPECT_FLOAT_EQ(orm.at(y, y, 2), 0.0f);
+  }
+  EXPECT_FALSE(panel()->applyButton()->isEnabled());
+  EXPECT_TRUE(panel()->saveButton()->isEnabled());
+  bool explained = false;
+  for (const QLabel* label : panel()->findChildren<QLabel*>())
+    explained = explained || label->text().contains(QStringLiteral("no ao map"));
+  EXPECT_TRUE(explained);
+}
+
 TEST_F(GeneratePanelTest, AMissingSourceMapIsExplained) {
   document()->clearMap(core::MapSlot::Height);
   panel()->setGenerator(core::GeneratorKind::AmbientOcclusion);

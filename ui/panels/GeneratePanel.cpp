@@ -127,9 +127,17 @@ void GeneratePanel::rebuild() {
     auto* box = new QComboBox;
     for (core::MapSlot slot : core::kAllMapSlots)
       box->addItem(toQString(core::mapSlotLabel(slot)));
+    // An optional input may be left out (its neutral value stands in); the last item.
+    if (input.optional)
+      box->addItem(tr("None (neutral value)"));
     box->setCurrentIndex(int(input.defaultSlot));
     box->setToolTip(
-        tr("Which of the material's maps to use as the %1.").arg(toQString(input.label).toLower()));
+        input.optional
+            ? tr("Which of the material's maps to use as the %1; none, or an empty slot, uses its "
+                 "neutral value.")
+                  .arg(toQString(input.label).toLower())
+            : tr("Which of the material's maps to use as the %1.")
+                  .arg(toQString(input.label).toLower()));
     connect(box, &QComboBox::activated, this, &GeneratePanel::regenerate);
     m_form->addRow(toQString(input.label), box);
     m_inputBoxes.push_back(box);
@@ -146,8 +154,7 @@ void GeneratePanel::rebuild() {
     m_optionEditors.push_back(editor);
   }
   m_destination->setCurrentIndex(int(info.output));
-  m_adjustMaterial->setVisible(m_kind == core::GeneratorKind::Height ||
-                               m_kind == core::GeneratorKind::Pack);
+  updateAdjustMaterial();
   m_adjustMaterial->setChecked(true);
   m_adjustMaterial->setText(m_kind == core::GeneratorKind::Height
                                 ? tr("Set the height scale to the measured depth")
@@ -159,8 +166,17 @@ std::vector<std::shared_ptr<const core::Image>> GeneratePanel::currentInputs(
   std::vector<std::shared_ptr<const core::Image>> inputs;
   const core::GeneratorInfo& info = core::generatorInfo(m_kind);
   for (std::size_t i = 0; i < m_inputBoxes.size(); ++i) {
-    const auto slot = core::kAllMapSlots[std::size_t(m_inputBoxes[i]->currentIndex())];
+    const auto choice = std::size_t(m_inputBoxes[i]->currentIndex());
+    if (choice >= core::kMapSlotCount) {  // "None" of an optional input
+      inputs.push_back(nullptr);
+      continue;
+    }
+    const auto slot = core::kAllMapSlots[choice];
     const std::shared_ptr<const core::Image>& image = m_document->material().map(slot).image;
+    if (!image && info.inputs[i].optional) {
+      inputs.push_back(nullptr);
+      continue;
+    }
     if (!image) {
       problem = tr("The material has no %1 map to use as the %2. Load one (Maps) or pick another.")
                     .arg(toQString(core::mapSlotLabel(slot)).toLower(),
@@ -177,10 +193,15 @@ void GeneratePanel::regenerate() {
   m_apply->setEnabled(false);
   m_save->setEnabled(false);
   m_progress->setValue(0);
+  updateAdjustMaterial();
   QString problem;
   auto inputs = currentInputs(problem);
   showSource();
-  if (inputs.empty()) {
+  const bool anyInput =
+      std::any_of(inputs.begin(), inputs.end(), [](const auto& image) { return bool(image); });
+  if (!anyInput && problem.isEmpty())
+    problem = tr("The material has none of the maps this generator reads. Load one (Maps).");
+  if (!anyInput) {
     m_runner->cancel();
     m_view->setRight({}, tr("Result"));
     m_status->setText(problem);
@@ -191,7 +212,7 @@ void GeneratePanel::regenerate() {
       core::generatorInfo(m_kind).inputs.front().defaultSlot == core::MapSlot::Normal ||
       (m_kind == core::GeneratorKind::Curvature &&
        m_values[std::size_t(core::findGeneratorOption(m_kind, "from"))] == 1.0);
-  if (normalSource) {
+  if (normalSource && inputs.front()) {
     if (const auto message = core::normalMapWarning(*inputs.front())) {
       warning = tr("Warning: %1.").arg(QString::fromStdString(*message));
     }
@@ -201,10 +222,20 @@ void GeneratePanel::regenerate() {
 }
 
 void GeneratePanel::showSource() {
+  // The first input that has a map (pack's inputs may all be optional).
+  const core::Image* image = nullptr;
+  core::MapSlot slot = core::MapSlot::Color;
+  for (const QComboBox* box : m_inputBoxes) {
+    const auto choice = std::size_t(box->currentIndex());
+    if (choice >= core::kMapSlotCount)
+      continue;
+    slot = core::kAllMapSlots[choice];
+    image = m_document->material().image(slot);
+    if (image)
+      break;
+  }
   if (m_inputBoxes.empty())
     return;
-  const auto slot = core::kAllMapSlots[std::size_t(m_inputBoxes.front()->currentIndex())];
-  const core::Image* image = m_document->material().image(slot);
   m_view->setLeft(image ? renderer::makeThumbnail(*image, kViewSize) : QImage(),
                   tr("Source: %1").arg(toQString(core::mapSlotLabel(slot))));
 }
@@ -217,11 +248,28 @@ void GeneratePanel::showResult(const core::GeneratedMap& map, bool preview) {
   for (const std::string& note : map.notes)
     notes << QString::fromStdString(note);
   if (!preview) {
-    m_apply->setEnabled(true);
+    const bool fits = resultFitsASlot();
+    m_apply->setEnabled(fits);
     m_save->setEnabled(true);
-    m_status->setText(notes.isEmpty() ? tr("Ready: Apply puts it into the material.")
-                                      : notes.join(QStringLiteral("; ")));
+    const QString ready = fits ? tr("Ready: Apply puts it into the material.")
+                               : tr("Ready: Save writes it (the material has no slot for a "
+                                    "packed map in this layout).");
+    m_status->setText(
+        notes.isEmpty() ? ready : notes.join(QStringLiteral("; ")) + QStringLiteral(". ") + ready);
   }
+}
+
+bool GeneratePanel::resultFitsASlot() const {
+  if (m_kind != core::GeneratorKind::Pack)
+    return true;
+  // Only height in normal alpha (the layout's first choice) goes back into a slot.
+  return m_values[std::size_t(core::findGeneratorOption(m_kind, "layout"))] == 0.0;
+}
+
+void GeneratePanel::updateAdjustMaterial() {
+  m_adjustMaterial->setVisible(m_kind == core::GeneratorKind::Height ||
+                               (m_kind == core::GeneratorKind::Pack && resultFitsASlot()));
+  m_destination->setEnabled(resultFitsASlot());
 }
 
 void GeneratePanel::apply() {

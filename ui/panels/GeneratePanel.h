@@ -31,6 +31,7 @@ class GeneratePanel : public QWidget {
   QComboBox* generatorBox() const { return m_generator; }
   QWidget* optionEditor(const std::string& name) const;
   QPushButton* applyButton() const { return m_apply; }
+  QPushButton* saveButton() const { return m_save; }
   GeneratorRunner* runner() const { return m_runner; }
   const std::optional<core::GeneratedMap>& result() const { return m_result; }
 
@@ -48,6 +49,12 @@ class GeneratePanel : public QWidget {
   void showSource();
   void showResult(const core::GeneratedMap& map, bool preview);
   std::vector<std::shared_ptr<const core::Image>> currentInputs(QString& problem) const;
+  // Whether the result can go into one of the material's slots (a packed ORM or mask map has
+  // no slot: it is saved, not applied).
+  bool resultFitsASlot() const;
+  // Shows the options that apply to the current choice (height compensation for pack's
+  // normal-height layout only).
+  void updateAdjustMaterial();
 
   MaterialDocument* m_document;
   GeneratorRunner* m_runner;

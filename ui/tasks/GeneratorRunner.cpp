@@ -34,15 +34,22 @@ void GeneratorRunner::request(core::GeneratorKind kind,
   m_fullSize = false;
   m_task.run<Outcome>(
       [job](const core::WorkControl& control) -> Outcome {
-        // The previews of the inputs, at most kPreviewSize on their longer side.
-        const core::Image& first = *job->inputs.front();
+        // The previews of the inputs, at most kPreviewSize on their longer side; optional
+        // inputs not given stay null.
+        const auto given = std::find_if(job->inputs.begin(), job->inputs.end(),
+                                        [](const auto& input) { return bool(input); });
+        if (given == job->inputs.end())
+          return core::Error{"no input maps"};
+        const core::Image& first = **given;
         const double scale =
             std::min(1.0, double(kPreviewSize) / std::max(first.width(), first.height()));
         std::vector<core::Image> small;
         std::vector<const core::Image*> pointers;
         small.reserve(job->inputs.size());
         for (const auto& input : job->inputs) {
-          if (scale < 1.0) {
+          if (!input) {
+            pointers.push_back(nullptr);
+          } else if (scale < 1.0) {
             small.push_back(
                 core::resizeImage(*input, std::max(1, int(std::lround(input->width() * scale))),
                                   std::max(1, int(std::lround(input->height() * scale)))));
