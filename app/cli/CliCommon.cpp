@@ -5,6 +5,7 @@
 #include "core/mesh/MeshPrimitives.h"
 
 #include <QFileInfo>
+#include <QJsonDocument>
 
 #include <cmath>
 #include <cstdio>
@@ -116,6 +117,18 @@ std::optional<int> integerOption(const QCommandLineParser& parser, const QString
     return std::nullopt;
   }
   return value;
+}
+
+CliOption jsonOption() {
+  return {QStringLiteral("json"),
+          {},
+          QStringLiteral("Print the result as one JSON object on standard output."),
+          {}};
+}
+
+void printJson(const QJsonObject& object) {
+  printOut(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)) +
+           QLatin1Char('\n'));
 }
 
 CliOption strictOption(const QString& doing) {

@@ -4,6 +4,7 @@
 #include "core/mesh/Mesh.h"
 
 #include <QCommandLineParser>
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
 
@@ -88,6 +89,11 @@ std::optional<double> numberOption(const QCommandLineParser& parser, const QStri
 // Parses a whole-number option within [minimum, maximum]; "0.5" or "1e3" is refused.
 std::optional<int> integerOption(const QCommandLineParser& parser, const QString& name,
                                  int fallback, int minimum, int maximum);
+
+// --json, for the commands that report a result: one JSON object on standard output instead
+// of the text lines (printed with printJson, --quiet or not).
+CliOption jsonOption();
+void printJson(const QJsonObject& object);
 
 // --strict, for the commands that read a preset and otherwise carry on past its problems (a
 // missing or unreadable map, a clamped value): `doing` is what they do ("exporting").

@@ -6,6 +6,8 @@
 #include "TerminalProgress.h"
 #include "core/exporters/Exporter.h"
 
+#include <QJsonArray>
+
 namespace relief::cli {
 namespace {
 
@@ -45,6 +47,7 @@ CliOptions options() {
            .arg(names(core::packageTextureChoices())),
        qstr(core::packageTextureChoices().front().name)},
       strictOption(QStringLiteral("exporting")),
+      jsonOption(),
   };
 }
 
@@ -110,6 +113,15 @@ int runExport(const QStringList& arguments) {
   if (!written) {
     printError(QString::fromStdString(written.error()));
     return kExitFailure;
+  }
+  if (parser.isSet(QStringLiteral("json"))) {
+    QJsonArray notes;
+    for (const std::string& note : written->notes)
+      notes.append(QString::fromStdString(note));
+    printJson({{QStringLiteral("kind"), qstr(core::exportKindInfo(request.kind).name)},
+               {QStringLiteral("written"), QString::fromStdString(written->writtenPath)},
+               {QStringLiteral("notes"), notes}});
+    return kExitOk;
   }
   printNote(QStringLiteral("wrote %1\n").arg(QString::fromStdString(written->writtenPath)));
   for (const std::string& note : written->notes)

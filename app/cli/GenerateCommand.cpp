@@ -8,6 +8,8 @@
 #include "core/image/ImageIO.h"
 
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
 
 #include <algorithm>
 #include <iterator>
@@ -40,6 +42,7 @@ CliOptions generatorOptions(const core::GeneratorInfo& info) {
        QStringLiteral("Output: .png/.tif are written 16-bit, .exr float, .jpg/.tga 8-bit with "
                       "dither."),
        {}});
+  options.push_back(jsonOption());
   for (const core::OptionSpec& option : info.options) {
     options.push_back({qstr(option.name),
                        QStringLiteral("value"),
@@ -146,6 +149,35 @@ std::optional<int> swizzle(const QString& terms, const core::Image& normal, core
   return std::nullopt;
 }
 
+// What a generator made: its notes as lines, or with --json one object with the output's path,
+// size, channels, notes and (height from normal, pack) the depth or height range.
+void reportGenerated(const QCommandLineParser& parser, std::string_view generator,
+                     const QString& outPath, const core::Image& image,
+                     const std::vector<std::string>& notes,
+                     const std::optional<core::LevelsRange>& levels = std::nullopt,
+                     const std::optional<double>& depthTexels = std::nullopt) {
+  if (!parser.isSet(QStringLiteral("json"))) {
+    for (const std::string& note : notes)
+      printNote(QString::fromStdString(note) + QLatin1Char('\n'));
+    return;
+  }
+  QJsonArray noteArray;
+  for (const std::string& note : notes)
+    noteArray.append(QString::fromStdString(note));
+  QJsonObject object{
+      {QStringLiteral("generator"), qstr(generator)}, {QStringLiteral("output"), outPath},
+      {QStringLiteral("width"), image.width()},       {QStringLiteral("height"), image.height()},
+      {QStringLiteral("channels"), image.channels()}, {QStringLiteral("notes"), noteArray}};
+  if (levels) {
+    object.insert(
+        QStringLiteral("heightRange"),
+        QJsonObject{{QStringLiteral("low"), levels->low}, {QStringLiteral("high"), levels->high}});
+  }
+  if (depthTexels)
+    object.insert(QStringLiteral("depthTexels"), *depthTexels);
+  printJson(object);
+}
+
 // pack with channel terms or maps only the terms can name (--color, --metallic): any map or
 // constant into any channel, starting from --layout's terms. Returns nullopt when none of those
 // is given (core's pack generator runs, with --layout and the table's inputs).
@@ -216,11 +248,14 @@ std::optional<int> runChannelPack(const QCommandLineParser& parser,
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
   }
+  std::vector<std::string> notes;
   for (const std::string& name : substituted) {
-    printNote(QStringLiteral("no %1 map: its neutral value %2 was used\n")
-                  .arg(QString::fromStdString(name))
-                  .arg(double(core::neutralMapValue(name).value_or(0.0f))));
+    notes.push_back(QStringLiteral("no %1 map: its neutral value %2 was used")
+                        .arg(QString::fromStdString(name))
+                        .arg(double(core::neutralMapValue(name).value_or(0.0f)))
+                        .toStdString());
   }
+  reportGenerated(parser, "pack", outPath, packed.value(), notes);
   return kExitOk;
 }
 
@@ -319,9 +354,8 @@ int runGenerate(const QStringList& arguments) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
   }
-  for (const std::string& note : result->notes) {
-    printNote(QString::fromStdString(note) + QLatin1Char('\n'));
-  }
+  reportGenerated(parser, info.name, outPath, output, result->notes, result->levels,
+                  result->depthTexels);
   return kExitOk;
 }
 

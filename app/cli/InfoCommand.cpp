@@ -7,7 +7,6 @@
 #include "core/material/MapSlot.h"
 
 #include <QFileInfo>
-#include <QJsonDocument>
 #include <QJsonObject>
 
 namespace relief::cli {
@@ -53,7 +52,7 @@ int runInfo(const QStringList& arguments) {
                      "checking that all of its pixel data decodes, and how Relief reads it in "
                      "each map slot."));
   parser.addPositionalArgument(QStringLiteral("image"), QStringLiteral("The image file."));
-  addOptions(parser, {{QStringLiteral("json"), {}, QStringLiteral("Print one JSON object."), {}}});
+  addOptions(parser, {jsonOption()});
   if (auto exit =
           parseOrExit(parser, arguments, QStringLiteral("relief-cli info <image> [--json]"))) {
     return *exit;
@@ -94,8 +93,7 @@ int runInfo(const QStringList& arguments) {
         {QStringLiteral("readAs"), readAs},
         {QStringLiteral("slotFromName"),
          slotByName ? QJsonValue(qstr(core::mapSlotName(*slotByName))) : QJsonValue()}};
-    printOut(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)) +
-             QLatin1Char('\n'));
+    printJson(object);
     return kExitOk;
   }
   QString readAs;

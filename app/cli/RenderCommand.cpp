@@ -3,6 +3,7 @@
 
 #include "../DisplayCheck.h"
 #include "CliCommon.h"
+
 #include "core/compression/MapFile.h"
 #include "core/image/ImageFileTypes.h"
 #include "core/image/ImageIO.h"
@@ -19,6 +20,7 @@
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QImage>
+#include <QJsonObject>
 #include <QPainter>
 #include <QRegularExpression>
 #include <QSurfaceFormat>
@@ -93,6 +95,7 @@ CliOptions renderOptions() {
                          QStringLiteral(". error prints the UV error against the exact trace."),
                      QStringLiteral("shading")});
   options.push_back(strictOption(QStringLiteral("rendering")));
+  options.push_back(jsonOption());
   options.push_back(
       {QStringLiteral("format"),
        QStringLiteral("png|exr"),
@@ -110,6 +113,7 @@ struct RenderRequest {
   int height = 720;
   QString outPath;
   bool exr = false;
+  bool json = false;
   core::ViewState presetView;  // the preset's camera, light and mesh, used unless overridden
 };
 
@@ -167,18 +171,25 @@ core::Result<core::Image> renderView(renderer::OffscreenRenderer& offscreen,
 // The error view: the exact tracer against this frame's UVs. Prints the statistics; writes the
 // heat map (PNG, with legend) or the error in texels (EXR, 1 channel, -1 where empty).
 core::Result<core::Image> renderErrorView(renderer::OffscreenRenderer& offscreen,
-                                          const RenderRequest& request) {
+                                          const RenderRequest& request, QJsonObject& report) {
   auto inputs = offscreen.renderErrorViewInputs(request.frame, request.width, request.height);
   if (!inputs)
     return core::makeError(inputs.error());
   const core::UvErrorMap map =
       core::computeUvErrorMap(inputs->finalUv, inputs->eyeRays, inputs->field);
-  printOut(QStringLiteral("UV error against the exact trace: mean %1, 95th percentile %2, max %3 "
-                          "texels over %4 pixels\n")
-               .arg(map.mean, 0, 'f', 4)
-               .arg(map.p95, 0, 'f', 4)
-               .arg(map.maximum, 0, 'f', 4)
-               .arg(map.pixels));
+  report.insert(QStringLiteral("uvErrorTexels"),
+                QJsonObject{{QStringLiteral("mean"), map.mean},
+                            {QStringLiteral("p95"), map.p95},
+                            {QStringLiteral("max"), map.maximum},
+                            {QStringLiteral("pixels"), double(map.pixels)}});
+  if (!request.json) {
+    printOut(QStringLiteral("UV error against the exact trace: mean %1, 95th percentile %2, max "
+                            "%3 texels over %4 pixels\n")
+                 .arg(map.mean, 0, 'f', 4)
+                 .arg(map.p95, 0, 'f', 4)
+                 .arg(map.maximum, 0, 'f', 4)
+                 .arg(map.pixels));
+  }
   if (request.exr)
     return map.texels;
   core::Image colors = core::colorizeErrorMap(map, core::kErrorDisplayTexels);
@@ -210,6 +221,7 @@ std::optional<int> parseOutput(const QCommandLineParser& parser, RenderRequest& 
     return kExitUsage;
   }
   request.exr = format == QStringLiteral("exr");
+  request.json = parser.isSet(QStringLiteral("json"));
   const core::ImageFileType* type = core::imageFileTypeForPath(request.outPath.toStdString());
   if (request.exr && outSuffix != QStringLiteral("exr")) {
     printError(QStringLiteral("--out %1: --format exr writes an .exr file").arg(request.outPath));
@@ -406,8 +418,9 @@ int runRender(int argc, char* argv[]) {
   }
   offscreen.value()->setMesh(request.mesh);
   offscreen.value()->setMaterial(request.material);
+  QJsonObject report;
   core::Result<core::Image> image = request.frame.debugView == core::DebugView::Error
-                                        ? renderErrorView(*offscreen.value(), request)
+                                        ? renderErrorView(*offscreen.value(), request, report)
                                         : renderView(*offscreen.value(), request);
   if (!image) {
     printError(QStringLiteral("render: ") + QString::fromStdString(image.error()));
@@ -420,6 +433,15 @@ int runRender(int argc, char* argv[]) {
       !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
+  }
+  if (request.json) {
+    report.insert(QStringLiteral("output"), request.outPath);
+    report.insert(QStringLiteral("width"), request.width);
+    report.insert(QStringLiteral("height"), request.height);
+    report.insert(QStringLiteral("view"), qstr(core::debugViewName(request.frame.debugView)));
+    report.insert(QStringLiteral("technique"),
+                  qstr(core::techniqueName(request.material.technique())));
+    printJson(report);
   }
   return kExitOk;
 }

@@ -453,6 +453,43 @@ TEST(Cli, ProgressOnlyOnATerminalAndQuietOnlyResults) {
   EXPECT_NE(terminal.find("c.dds: BC1"), std::string::npos) << terminal;
 }
 
+// --json on every command that reports something: one object on stdout that parses, with the
+// command's facts (the output's size, the relief depth, the export's main file, the error view's
+// statistics) and nothing else printed there.
+TEST(Cli, ReportingCommandsPrintOneJsonObject) {
+  const std::string folder = scratchFolder();
+  const auto object = [](const CliRun& run) {
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    QJsonParseError error{};
+    const QJsonDocument document =
+        QJsonDocument::fromJson(QByteArray::fromStdString(run.out), &error);
+    EXPECT_EQ(error.error, QJsonParseError::NoError) << run.out;
+    return document.object();
+  };
+  const QJsonObject height =
+      object(runCli({QStringLiteral("generate"), QStringLiteral("height"), QStringLiteral("--in"),
+                     q(sourcePath("samples/bricks/bricks_normal.png")), QStringLiteral("--out"),
+                     q(folder + "/h.png"), QStringLiteral("--json")}));
+  EXPECT_EQ(height.value(QStringLiteral("width")).toInt(), 1024);
+  EXPECT_GT(height.value(QStringLiteral("depthTexels")).toDouble(), 1.0);
+  const QJsonObject exported =
+      object(runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(samplePreset("tiles")),
+                     QStringLiteral("--to"), QStringLiteral("godot"), QStringLiteral("--out"),
+                     q(folder + "/godot"), QStringLiteral("--json")}));
+  EXPECT_TRUE(
+      exported.value(QStringLiteral("written")).toString().endsWith(QStringLiteral(".tres")));
+  const QJsonObject error =
+      object(runCli({QStringLiteral("render"), q(samplePreset("tiles")), QStringLiteral("--view"),
+                     QStringLiteral("error"), QStringLiteral("--size"), QStringLiteral("96x64"),
+                     QStringLiteral("--out"), q(folder + "/e.png"), QStringLiteral("--json")}));
+  const QJsonObject stats = error.value(QStringLiteral("uvErrorTexels")).toObject();
+  EXPECT_GT(stats.value(QStringLiteral("pixels")).toDouble(), 0.0);
+  EXPECT_LE(stats.value(QStringLiteral("mean")).toDouble(),
+            stats.value(QStringLiteral("p95")).toDouble() + 1e-9);
+  EXPECT_LE(stats.value(QStringLiteral("p95")).toDouble(),
+            stats.value(QStringLiteral("max")).toDouble() + 1e-9);
+}
+
 TEST(Cli, GenerateExplainsWhatIsWrong) {
   const std::string folder = scratchFolder();
   const QString height = q(sourcePath("samples/tiles/tiles_height.png"));
