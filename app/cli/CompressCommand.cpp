@@ -250,7 +250,8 @@ int runDecode(const QStringList& arguments) {
              {{QStringLiteral("out"), QStringLiteral("file"), QStringLiteral("Output image."), {}},
               {QStringLiteral("level"), QStringLiteral("n"), QStringLiteral("Mip level."),
                QStringLiteral("0")},
-              {QStringLiteral("raw"), {}, QStringLiteral("Write the texels unchanged."), {}}});
+              {QStringLiteral("raw"), {}, QStringLiteral("Write the texels unchanged."), {}},
+              jsonOption()});
   if (auto exit = parseOrExit(parser, arguments,
                               QStringLiteral("relief-cli decode F.dds|F.ktx2 --out F.png")))
     return *exit;
@@ -279,6 +280,15 @@ int runDecode(const QStringList& arguments) {
   if (core::Status saved = core::saveImage(image.value(), out); !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
+  }
+  if (parser.isSet(QStringLiteral("json"))) {
+    printJson({{QStringLiteral("output"), QString::fromStdString(out)},
+               {QStringLiteral("format"), qstr(core::textureFormatInfo(texture->format).name)},
+               {QStringLiteral("width"), image->width()},
+               {QStringLiteral("height"), image->height()},
+               {QStringLiteral("level"), *level},
+               {QStringLiteral("levels"), int(texture->levels.size())}});
+    return kExitOk;
   }
   printNote(
       QStringLiteral("%1: %2 %3x%4 level %5 of %6\n")

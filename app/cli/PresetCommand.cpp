@@ -4,17 +4,22 @@
 #include "CliCommon.h"
 #include "core/material/MaterialPreset.h"
 
+#include <QJsonArray>
+#include <QJsonObject>
+
 namespace relief::cli {
 namespace {
 
 const char* kUsage =
-    "Usage: relief-cli preset <validate|info> <preset.relief>\n"
+    "Usage: relief-cli preset <validate|info> <preset.relief> [--json]\n"
     "\n"
     "  validate  Load the preset and its maps as the editor does. Exit 0 and a summary when\n"
     "            nothing is wrong; exit 1 and every problem (a missing map, a value out of\n"
     "            range, a wrong type, an unknown key) when something is.\n"
     "  info      Print the preset's technique, parameters, maps, compression choices and\n"
-    "            view. Problems are printed too, as warnings.\n";
+    "            view. Problems are printed too, as warnings.\n"
+    "  --json    Either: one JSON object on standard output instead (validity, problems,\n"
+    "            technique, maps with sizes and compression, parameters by name).\n";
 
 QString mapsSummary(const core::Material& material) {
   QStringList parts;
@@ -29,7 +34,55 @@ QString mapsSummary(const core::Material& material) {
   return parts.isEmpty() ? QStringLiteral("none") : parts.join(QStringLiteral(", "));
 }
 
-int validate(const QString& path) {
+// The preset as one JSON object: validity and problems, then what it holds.
+QJsonObject presetJson(const QString& path, const core::LoadedPreset& loaded) {
+  const core::Material& material = loaded.preset.material;
+  QJsonArray problems;
+  for (const std::string& warning : loaded.warnings)
+    problems.append(QString::fromStdString(warning));
+  QJsonObject maps;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    const core::MaterialMap& map = material.map(slot);
+    if (!map.image)
+      continue;
+    QJsonObject entry{{QStringLiteral("file"), QString::fromStdString(map.sourcePath)},
+                      {QStringLiteral("width"), map.image->width()},
+                      {QStringLiteral("height"), map.image->height()},
+                      {QStringLiteral("channels"), map.image->channels()}};
+    if (const core::MapCompression& compression = loaded.preset.compression[std::size_t(slot)]) {
+      entry.insert(
+          QStringLiteral("compression"),
+          QJsonObject{
+              {QStringLiteral("format"), qstr(core::textureFormatInfo(compression->format).name)},
+              {QStringLiteral("quality"), qstr(core::compressionQualityName(compression->quality))},
+              {QStringLiteral("mipmaps"), compression->mipmaps}});
+    }
+    maps.insert(qstr(core::mapSlotName(slot)), entry);
+  }
+  QJsonObject parameters;
+  for (const core::ParameterSpec& spec : core::allParameters())
+    parameters.insert(qstr(spec.name), material.parameter(spec.id));
+  return {{QStringLiteral("file"), path},
+          {QStringLiteral("valid"), loaded.warnings.empty()},
+          {QStringLiteral("problems"), problems},
+          {QStringLiteral("format"), qstr(core::kPresetFormatName)},
+          {QStringLiteral("fileVersion"), loaded.fileVersion},
+          {QStringLiteral("name"), QString::fromStdString(material.name())},
+          {QStringLiteral("technique"), qstr(core::techniqueName(material.technique()))},
+          {QStringLiteral("maps"), maps},
+          {QStringLiteral("parameters"), parameters}};
+}
+
+int validate(const QString& path, bool json) {
+  if (json) {
+    core::Result<core::LoadedPreset> loaded = core::loadPreset(path.toStdString());
+    if (!loaded) {
+      printError(QString::fromStdString(loaded.error()));
+      return kExitFailure;
+    }
+    printJson(presetJson(path, loaded.value()));
+    return loaded->warnings.empty() ? kExitOk : kExitFailure;
+  }
   core::Result<core::LoadedPreset> loaded = core::loadPreset(path.toStdString());
   if (!loaded) {
     printError(QString::fromStdString(loaded.error()));
@@ -54,11 +107,15 @@ int validate(const QString& path) {
   return kExitOk;
 }
 
-int info(const QString& path) {
+int info(const QString& path, bool json) {
   core::Result<core::LoadedPreset> loaded = core::loadPreset(path.toStdString());
   if (!loaded) {
     printError(QString::fromStdString(loaded.error()));
     return kExitFailure;
+  }
+  if (json) {
+    printJson(presetJson(path, loaded.value()));
+    return kExitOk;
   }
   for (const std::string& warning : loaded->warnings)
     printError(QStringLiteral("warning: ") + QString::fromStdString(warning));
@@ -138,16 +195,18 @@ int runPreset(const QStringList& arguments) {
     printOut(QString::fromUtf8(kUsage));
     return kExitOk;
   }
-  if (arguments.size() != 4) {
+  QStringList rest = arguments;
+  const bool json = rest.removeAll(QStringLiteral("--json")) > 0;
+  if (rest.size() != 4) {
     printError(QStringLiteral("preset takes an action and one file"));
     printOut(QString::fromUtf8(kUsage));
     return kExitUsage;
   }
-  const QString& action = arguments[2];
+  const QString& action = rest[2];
   if (action == QStringLiteral("validate"))
-    return validate(arguments[3]);
+    return validate(rest[3], json);
   if (action == QStringLiteral("info"))
-    return info(arguments[3]);
+    return info(rest[3], json);
   printError(QStringLiteral("preset: unknown action '%1' (validate or info)").arg(action));
   return kExitUsage;
 }

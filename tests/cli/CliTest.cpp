@@ -482,6 +482,19 @@ TEST(Cli, ReportingCommandsPrintOneJsonObject) {
       object(runCli({QStringLiteral("render"), q(samplePreset("tiles")), QStringLiteral("--view"),
                      QStringLiteral("error"), QStringLiteral("--size"), QStringLiteral("96x64"),
                      QStringLiteral("--out"), q(folder + "/e.png"), QStringLiteral("--json")}));
+  const QJsonObject preset = object(runCli({QStringLiteral("preset"), QStringLiteral("validate"),
+                                            q(samplePreset("tiles")), QStringLiteral("--json")}));
+  EXPECT_TRUE(preset.value(QStringLiteral("valid")).toBool());
+  EXPECT_EQ(preset.value(QStringLiteral("maps"))
+                .toObject()
+                .value(QStringLiteral("height"))
+                .toObject()
+                .value(QStringLiteral("width"))
+                .toInt(),
+            1024);
+  EXPECT_TRUE(preset.value(QStringLiteral("parameters"))
+                  .toObject()
+                  .contains(QStringLiteral("heightScale")));
   const QJsonObject stats = error.value(QStringLiteral("uvErrorTexels")).toObject();
   EXPECT_GT(stats.value(QStringLiteral("pixels")).toDouble(), 0.0);
   EXPECT_LE(stats.value(QStringLiteral("mean")).toDouble(),
