@@ -249,12 +249,8 @@ std::optional<int> runChannelPack(const QCommandLineParser& parser,
     return kExitFailure;
   }
   std::vector<std::string> notes;
-  for (const std::string& name : substituted) {
-    notes.push_back(QStringLiteral("no %1 map: its neutral value %2 was used")
-                        .arg(QString::fromStdString(name))
-                        .arg(double(core::neutralMapValue(name).value_or(0.0f)))
-                        .toStdString());
-  }
+  for (const std::string& name : substituted)
+    notes.push_back(core::neutralValueNote(name));
   reportGenerated(parser, "pack", outPath, packed.value(), notes);
   return kExitOk;
 }

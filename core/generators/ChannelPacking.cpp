@@ -212,6 +212,14 @@ std::optional<float> neutralMapValue(std::string_view name) {
   return std::nullopt;
 }
 
+std::string neutralValueNote(std::string_view name) {
+  char value[16];
+  std::snprintf(value, sizeof value, "%g", double(neutralMapValue(name).value_or(0.0f)));
+  std::string note = "no ";
+  note.append(name).append(" map: its neutral value ").append(value).append(" was used");
+  return note;
+}
+
 std::vector<std::string> resolveLayoutTerms(const PackLayout& layout,
                                             const std::vector<NamedMap>& available,
                                             std::vector<std::string>* substituted) {

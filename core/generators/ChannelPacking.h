@@ -68,6 +68,10 @@ const PackLayout* findPackLayout(std::string_view name);
 // The neutral value a missing map stands for, or nullopt for a name no layout uses.
 std::optional<float> neutralMapValue(std::string_view name);
 
+// The note that says a missing map's neutral value was used ("no roughness map: its neutral
+// value 1 was used"), for the generator's notes and the CLI alike.
+std::string neutralValueNote(std::string_view name);
+
 // Resolves a layout's terms against the maps at hand: terms naming a missing map become its
 // neutral value (the inverse for "1-" terms). `substituted` receives the names replaced.
 std::vector<std::string> resolveLayoutTerms(const PackLayout& layout,

@@ -172,11 +172,8 @@ Result<GeneratedMap> runPack(const GeneratorRequest& request, const GeneratorVal
     if (!packed)
       return makeError(packed.error());
     result.image = std::move(packed).value();
-    for (const std::string& name : substituted) {
-      result.notes.push_back(
-          formatted(("no " + name + " map: its neutral value %g was used").c_str(),
-                    double(neutralMapValue(name).value_or(0.0f))));
-    }
+    for (const std::string& name : substituted)
+      result.notes.push_back(neutralValueNote(name));
     return result;
   }
   if (!request.inputs[0] || !request.inputs[1])
