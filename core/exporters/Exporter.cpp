@@ -3,6 +3,8 @@
 
 #include "core/exporters/GltfExport.h"
 #include "core/exporters/GodotExport.h"
+#include "core/exporters/UnityExport.h"
+#include "core/exporters/UnrealExport.h"
 
 #include <array>
 
@@ -24,7 +26,27 @@ constexpr std::array kKinds = {
                    "layers, flips); what Godot cannot show is listed after the export. See "
                    "docs/export.md.",
                    false, false},
+    ExportKindInfo{ExportKind::Unreal, "unreal",
+                   "Unreal Engine: textures, manifest and import script",
+                   "BaseColor, Normal (DirectX, green down), ORM (occlusion, roughness, metallic) "
+                   "and Height textures, a JSON manifest with the ParallaxOcclusionMapping "
+                   "function's inputs converted from Relief's, and a Python script that builds "
+                   "the material in the Unreal Editor. See docs/export.md.",
+                   false, false},
+    ExportKindInfo{ExportKind::UnityUrp, "unity", "Unity URP Lit: .mat, textures and .meta files",
+                   "A Universal Render Pipeline Lit material with its textures (metallic/"
+                   "smoothness, occlusion, normal and height maps) and .meta files: copy the "
+                   "folder into Assets/. URP's parallax is single-step. See docs/export.md.",
+                   false, false},
+    ExportKindInfo{ExportKind::UnityHdrp, "unity-hdrp",
+                   "Unity HDRP Lit: .mat, textures and .meta files",
+                   "A High Definition Render Pipeline Lit material with its textures (mask map, "
+                   "normal and height maps) and .meta files, the relief as HDRP's pixel "
+                   "displacement (POM): copy the folder into Assets/. See docs/export.md.",
+                   false, false},
 };
+
+static_assert(kKinds.size() == std::size_t(ExportKind::UnityHdrp) + 1, "one entry per kind");
 
 constexpr std::array kMapFormats = {
     ExportChoice<PackageMapFormat>{PackageMapFormat::Png16, "png16", "16-bit PNG"},
@@ -38,6 +60,19 @@ constexpr std::array kTextureChoices = {
                                   "DDS for BC formats, KTX2 for the rest"},
     ExportChoice<PackageTextures>{PackageTextures::None, "none", "None"},
 };
+
+Result<EngineExportResult> exportEngine(const ExportRequest& request) {
+  switch (request.kind) {
+    case ExportKind::Unreal:
+      return exportUnreal(request.preset, request.folder);
+    case ExportKind::UnityUrp:
+      return exportUnity(request.preset, request.folder, UnityPipeline::Urp);
+    case ExportKind::UnityHdrp:
+      return exportUnity(request.preset, request.folder, UnityPipeline::Hdrp);
+    default:
+      return exportGodot(request.preset, request.folder);
+  }
+}
 
 static_assert(kMapFormats[0].value == PackageOptions{}.dataMaps, "the first is the default");
 static_assert(kTextureChoices[0].value == PackageOptions{}.textures, "the first is the default");
@@ -88,11 +123,14 @@ Result<ExportResult> exportMaterial(const ExportRequest& request, const WorkCont
       result.writtenPath = std::move(written).value();
       break;
     }
-    case ExportKind::Godot: {
-      Result<GodotExportResult> written = exportGodot(request.preset, request.folder);
+    case ExportKind::Godot:
+    case ExportKind::Unreal:
+    case ExportKind::UnityUrp:
+    case ExportKind::UnityHdrp: {
+      Result<EngineExportResult> written = exportEngine(request);
       if (!written)
         return makeError(written.error());
-      result.writtenPath = written->tresPath;
+      result.writtenPath = written->mainPath;
       result.notes = written->notes;
       break;
     }

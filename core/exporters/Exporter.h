@@ -1,4 +1,5 @@
-// What Relief exports, declared once: the kinds (package, glTF 2.0, Godot 4) with their names
+// What Relief exports, declared once: the kinds (package, glTF 2.0, Godot 4, Unreal, Unity URP
+// and HDRP) with their names
 // (the CLI's --to), labels and descriptions (the export dialog), the package's map-file and
 // compressed-texture choices (--maps, --textures and the dialog's boxes), and one entry point
 // that runs any kind, so the CLI and the dialog only parse, show and report.
@@ -18,7 +19,7 @@
 
 namespace relief::core::inline exporters {
 
-enum class ExportKind { Package, Gltf, Godot };
+enum class ExportKind { Package, Gltf, Godot, Unreal, UnityUrp, UnityHdrp };
 
 struct ExportKindInfo {
   ExportKind kind;
@@ -64,8 +65,8 @@ struct ExportRequest {
 };
 
 struct ExportResult {
-  std::string writtenPath;         // the main file: the preset, the .gltf or the .tres
-  std::vector<std::string> notes;  // what the target cannot show exactly (Godot)
+  std::string writtenPath;  // the main file: the preset, .gltf, .tres, .mat or Unreal manifest
+  std::vector<std::string> notes;  // what the engine cannot show exactly
 };
 
 // Runs the export. Fails with a message naming the file, or with "cancelled" (checked between

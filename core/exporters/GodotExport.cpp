@@ -30,7 +30,7 @@ const char* boolean(bool value) {
 
 }  // namespace
 
-Result<GodotExportResult> exportGodot(const Preset& preset, const std::string& folder) {
+Result<EngineExportResult> exportGodot(const Preset& preset, const std::string& folder) {
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
   if (ec)
@@ -38,7 +38,7 @@ Result<GodotExportResult> exportGodot(const Preset& preset, const std::string& f
   const Material& material = preset.material;
   const std::string stem = exportStem(material);
   const std::filesystem::path directory(folder);
-  GodotExportResult result;
+  EngineExportResult result;
 
   struct Texture {
     std::string id;
@@ -148,8 +148,8 @@ Result<GodotExportResult> exportGodot(const Preset& preset, const std::string& f
   const double tiling = material.parameter(ParamId::Tiling);
   tres << "uv1_scale = Vector3(" << number(tiling) << ", " << number(tiling) << ", 1.0)\n";
 
-  result.tresPath = (directory / (stem + ".tres")).string();
-  if (Status written = writeFileAtomically(result.tresPath, tres.str()); !written) {
+  result.mainPath = (directory / (stem + ".tres")).string();
+  if (Status written = writeFileAtomically(result.mainPath, tres.str()); !written) {
     return makeError(written.error());
   }
   return result;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/base/Result.h"
+#include "core/exporters/EngineConversion.h"
 #include "core/material/MaterialPreset.h"
 
 #include <string>
@@ -12,12 +13,8 @@
 
 namespace relief::core::inline exporters {
 
-struct GodotExportResult {
-  std::string tresPath;
-  // What Godot cannot represent exactly (a height bias, Kaneko's parallax), for the user.
-  std::vector<std::string> notes;
-};
-
-Result<GodotExportResult> exportGodot(const Preset& preset, const std::string& folder);
+// The result's mainPath is the .tres; its notes say what Godot cannot represent exactly (a
+// height bias, Kaneko's parallax).
+Result<EngineExportResult> exportGodot(const Preset& preset, const std::string& folder);
 
 }  // namespace relief::core::inline exporters

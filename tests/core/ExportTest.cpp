@@ -2,6 +2,7 @@
 // against the glTF 2.0 specification and passed through the Khronos validator; the Godot
 // .tres is parsed back and its heightmap settings checked against the offset Godot 4's
 // generated shader computes (docs/export.md).
+#include "ExportFixtures.h"
 #include "core/compression/TextureFile.h"
 #include "core/exporters/EngineConversion.h"
 #include "core/exporters/GltfExport.h"
@@ -29,51 +30,6 @@
 
 namespace relief::core {
 namespace {
-
-std::string freshFolder(const std::string& name) {
-  const std::string folder = test::scratchFolder() + "/" + name;
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
-  return folder;
-}
-
-// A small material with analytic maps: a colour ramp, a DirectX-convention normal map that
-// tilts towards +x, a height ramp, and an AO map.
-Preset syntheticPreset() {
-  constexpr int kSize = 16;
-  auto color = std::make_shared<Image>(kSize, kSize, 3, ColorSpace::Srgb);
-  auto normal = std::make_shared<Image>(kSize, kSize, 3);
-  auto height = std::make_shared<Image>(kSize, kSize, 1);
-  auto occlusion = std::make_shared<Image>(kSize, kSize, 1);
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
-      color->at(x, y, 0) = float(x) / (kSize - 1);
-      color->at(x, y, 1) = float(y) / (kSize - 1);
-      color->at(x, y, 2) = 0.5f;
-      normal->at(x, y, 0) = 0.75f;
-      normal->at(x, y, 1) = 0.25f;  // y down: the surface tilts so that +y is 0.75 in OpenGL
-      normal->at(x, y, 2) = 0.9f;
-      height->at(x, y, 0) = float(x + y * kSize) / (kSize * kSize - 1);
-      occlusion->at(x, y, 0) = 0.5f + 0.5f * float(y) / (kSize - 1);
-    }
-  }
-  Preset preset;
-  preset.material.setName("test brick");  // the space must not reach file names
-  preset.material.setMap(MapSlot::Color, color);
-  preset.material.setMap(MapSlot::Normal, normal);
-  preset.material.setMap(MapSlot::Height, height);
-  preset.material.setMap(MapSlot::AmbientOcclusion, occlusion);
-  preset.material.setTechnique(Technique::Pom);
-  preset.material.setParameter(ParamId::HeightScale, 0.06);
-  preset.material.setParameter(ParamId::HeightBias, -0.06);
-  preset.material.setParameter(ParamId::MinSamples, 12);
-  preset.material.setParameter(ParamId::MaxSamples, 48);
-  preset.material.setParameter(ParamId::Tiling, 2.0);
-  preset.material.setParameter(ParamId::NormalYDown, 1.0);
-  preset.material.setParameter(ParamId::Shininess, 2.0);
-  preset.material.setParameter(ParamId::NormalStrength, 0.8);
-  return preset;
-}
 
 double maxDifference(const Image& a, const Image& b) {
   EXPECT_EQ(a.width(), b.width());
@@ -361,9 +317,9 @@ GodotResource parseTres(const std::string& path) {
 TEST(GodotExport, TresParsesBackWithHeightmapSettingsConverted) {
   const Preset preset = syntheticPreset();
   const std::string folder = freshFolder("godot");
-  Result<GodotExportResult> exported = exportGodot(preset, folder);
+  Result<EngineExportResult> exported = exportGodot(preset, folder);
   ASSERT_TRUE(exported.ok()) << exported.error();
-  const GodotResource tres = parseTres(exported->tresPath);
+  const GodotResource tres = parseTres(exported->mainPath);
   EXPECT_EQ(tres.header.at("type"), "StandardMaterial3D");
   EXPECT_EQ(tres.header.at("format"), "3");
   EXPECT_EQ(std::stoi(tres.header.at("load_steps")), int(tres.extResources.size()) + 1);
@@ -421,9 +377,9 @@ TEST(GodotExport, DepthMapsFlipAndSimpleParallaxIsNotDeep) {
   preset.material.setTechnique(Technique::ParallaxLimited);
   preset.material.setParameter(ParamId::HeightIsDepth, 1.0);
   preset.material.setParameter(ParamId::HeightBias, 0.0);
-  Result<GodotExportResult> exported = exportGodot(preset, freshFolder("godot-flat"));
+  Result<EngineExportResult> exported = exportGodot(preset, freshFolder("godot-flat"));
   ASSERT_TRUE(exported.ok()) << exported.error();
-  const GodotResource tres = parseTres(exported->tresPath);
+  const GodotResource tres = parseTres(exported->mainPath);
   EXPECT_EQ(tres.properties.at("heightmap_deep_parallax"), "false");
   EXPECT_EQ(tres.properties.count("heightmap_min_layers"), 0u);
   EXPECT_EQ(tres.properties.at("heightmap_flip_texture"), "true");
@@ -437,9 +393,9 @@ TEST(GodotExport, DepthMapsFlipAndSimpleParallaxIsNotDeep) {
 TEST(GodotExport, NormalMappingOnlyLeavesHeightOff) {
   Preset preset = syntheticPreset();
   preset.material.setTechnique(Technique::Normal);
-  Result<GodotExportResult> exported = exportGodot(preset, freshFolder("godot-normal"));
+  Result<EngineExportResult> exported = exportGodot(preset, freshFolder("godot-normal"));
   ASSERT_TRUE(exported.ok()) << exported.error();
-  const GodotResource tres = parseTres(exported->tresPath);
+  const GodotResource tres = parseTres(exported->mainPath);
   EXPECT_EQ(tres.properties.count("heightmap_enabled"), 0u);
   EXPECT_EQ(tres.properties.at("normal_enabled"), "true");
 }

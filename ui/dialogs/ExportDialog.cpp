@@ -162,7 +162,8 @@ void ExportDialog::finishExport(core::Result<core::ExportResult>&& result, const
     QStringList notes;
     for (const std::string& note : result->notes)
       notes << QString::fromStdString(note);
-    message += tr("\n\nWhat Godot cannot show exactly:\n• ") + notes.join(QStringLiteral("\n• "));
+    message +=
+        tr("\n\nWhat the engine cannot show exactly:\n• ") + notes.join(QStringLiteral("\n• "));
   }
   QMessageBox box(QMessageBox::Information, tr("Export finished"), message, QMessageBox::Ok, this);
   box.setObjectName(QStringLiteral("exportFinished"));

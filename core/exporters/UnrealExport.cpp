@@ -1,0 +1,163 @@
+// UnrealExport; see UnrealExport.h and docs/export.md for the conversion.
+#include "core/exporters/UnrealExport.h"
+
+#include "core/base/AtomicFile.h"
+#include "core/exporters/PackageExport.h"
+#include "core/image/ImageIO.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace relief::core::inline exporters {
+namespace {
+
+// Where Unreal keeps Epic's POM function, and the names of its inputs the manifest wires.
+constexpr const char* kPomFunction =
+    "/Engine/Functions/Engine_MaterialFunctions01/Texturing/ParallaxOcclusionMapping";
+
+QString qs(const std::string& text) {
+  return QString::fromStdString(text);
+}
+
+}  // namespace
+
+double unrealReferencePlane(double heightScale, double heightBias) {
+  if (heightScale <= 0.0)
+    return 1.0;
+  return std::clamp(-heightBias / heightScale, 0.0, 1.0);
+}
+
+Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec)
+    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  const Material& material = preset.material;
+  const std::string stem = exportStem(material);
+  const std::filesystem::path directory(folder);
+  EngineExportResult result;
+
+  QJsonObject textures;
+  // compression: Unreal's TextureCompressionSettings by name, as its Python API spells them.
+  const auto write = [&](const std::string& key, const Image& image, SampleFormat format, bool srgb,
+                         const char* compression, QJsonObject extra = {}) -> Status {
+    const std::string file = "T_" + stem + "_" + key + ".png";
+    if (Status saved = saveImage(image, (directory / file).string(), format); !saved)
+      return saved;
+    extra.insert(QStringLiteral("file"), qs(file));
+    extra.insert(QStringLiteral("srgb"), srgb);
+    extra.insert(QStringLiteral("compression"), QString::fromLatin1(compression));
+    textures.insert(qs(key), extra);
+    return {};
+  };
+
+  if (const Image* color = material.image(MapSlot::Color)) {
+    if (Status s = write("BaseColor", *color, SampleFormat::UInt8, true, "TC_DEFAULT"); !s)
+      return makeError(s.error());
+  }
+  if (const Image* normals = material.image(MapSlot::Normal)) {
+    // Unreal's normal maps are green-down (DirectX).
+    const Image converted =
+        directXNormalMap(*normals, material.parameterFlag(ParamId::NormalYDown));
+    if (Status s = write("Normal", converted, SampleFormat::UInt8, false, "TC_NORMALMAP",
+                         {{QStringLiteral("convention"), QStringLiteral("DirectX, green down")}});
+        !s) {
+      return makeError(s.error());
+    }
+  }
+  const double roughness = roughnessFromShininess(material.parameter(ParamId::Shininess));
+  QJsonObject constants;
+  if (const std::optional<Image> orm = packEngineMasks(material, "orm")) {
+    const QJsonObject channels{{QStringLiteral("r"), QStringLiteral("ambient occlusion")},
+                               {QStringLiteral("g"), QStringLiteral("roughness")},
+                               {QStringLiteral("b"), QStringLiteral("metallic")}};
+    if (Status s = write("ORM", *orm, SampleFormat::UInt8, false, "TC_MASKS",
+                         {{QStringLiteral("channels"), channels}});
+        !s) {
+      return makeError(s.error());
+    }
+  } else {
+    constants.insert(QStringLiteral("Roughness"), roughness);
+    constants.insert(QStringLiteral("Metallic"), 0.0);
+  }
+
+  QJsonObject root{
+      {QStringLiteral("format"), QStringLiteral("relief-unreal-material")},
+      {QStringLiteral("version"), 1},
+      {QStringLiteral("name"), qs(stem)},
+      {QStringLiteral("material"), qs("M_" + stem)},
+  };
+  if (exportsParallax(material)) {
+    const Image height = engineHeightMap(*material.image(MapSlot::Height),
+                                         material.parameterFlag(ParamId::HeightIsDepth));
+    if (Status s = write("Height", height, SampleFormat::UInt16, false, "TC_GRAYSCALE"); !s)
+      return makeError(s.error());
+    const double scale = material.parameter(ParamId::HeightScale);
+    const double bias = material.parameter(ParamId::HeightBias);
+    const bool deep = isMarchingTechnique(material.technique());
+    // Epic's function marches view.xy / view.z scaled by Height Ratio (the depth as a fraction of
+    // the texture's width) in the UVs it is given: Relief's heightScale in tiled texture widths.
+    QJsonObject parallax{
+        {QStringLiteral("function"), QString::fromLatin1(kPomFunction)},
+        {QStringLiteral("HeightRatio"), scale},
+        {QStringLiteral("MinSteps"), deep ? material.parameter(ParamId::MinSamples) : 1.0},
+        {QStringLiteral("MaxSteps"), deep ? material.parameter(ParamId::MaxSamples) : 1.0},
+        {QStringLiteral("ReferencePlane"), unrealReferencePlane(scale, bias)},
+        {QStringLiteral("HeightmapChannel"), QJsonArray{1, 0, 0, 0}},
+        {QStringLiteral("PixelDepthOffset"), material.parameterFlag(ParamId::DepthOffset)},
+        {QStringLiteral("inputs"),
+         QJsonObject{{QStringLiteral("HeightRatio"), QStringLiteral("Height Ratio")},
+                     {QStringLiteral("MinSteps"), QStringLiteral("Min Steps")},
+                     {QStringLiteral("MaxSteps"), QStringLiteral("Max Steps")},
+                     {QStringLiteral("ReferencePlane"), QStringLiteral("Reference Plane")}}},
+        {QStringLiteral("outputs"), QStringLiteral("Parallax UVs drive every texture's UVs; "
+                                                   "Pixel Depth Offset when PixelDepthOffset")},
+    };
+    root.insert(QStringLiteral("parallax"), parallax);
+    if (!deep) {
+      result.notes.push_back(
+          "Unreal's parallax is the POM function; Relief's single-step parallax is exported as "
+          "one step of it");
+    }
+    const double plane = -bias / std::max(scale, 1e-12);
+    if (plane < 0.0 || plane > 1.0) {
+      result.notes.push_back("heightBias " + engineNumber(bias) +
+                             " puts the surface outside the relief; Reference Plane clamped to " +
+                             engineNumber(unrealReferencePlane(scale, bias)));
+    }
+  }
+  if (material.parameter(ParamId::NormalStrength) != 1.0 && material.hasMap(MapSlot::Normal)) {
+    result.notes.push_back("normalStrength " +
+                           engineNumber(material.parameter(ParamId::NormalStrength)) +
+                           " is not applied in Unreal (the script wires the normal map as is)");
+  }
+  root.insert(QStringLiteral("textures"), textures);
+  root.insert(QStringLiteral("constants"), constants);
+  root.insert(QStringLiteral("parameters"),
+              QJsonObject{{QStringLiteral("Tiling"), material.parameter(ParamId::Tiling)}});
+
+  const std::string manifestFile = stem + "_unreal.json";
+  result.mainPath = (directory / manifestFile).string();
+  const QByteArray json = QJsonDocument(root).toJson(QJsonDocument::Indented);
+  if (Status s = writeFileAtomically(result.mainPath, std::string_view(json.data(), json.size()));
+      !s)
+    return makeError(s.error());
+
+  // The import script is compiled in (core/exporters/scripts); the manifest's name goes first.
+  QFile script(QStringLiteral(":/exporters/unreal_import.py"));
+  if (!script.open(QIODevice::ReadOnly))
+    return makeError("the Unreal import script is missing from this build");
+  const std::string text =
+      "MANIFEST = \"" + manifestFile + "\"  # written by Relief\n" + script.readAll().toStdString();
+  if (Status s = writeFileAtomically((directory / (stem + "_unreal_import.py")).string(), text); !s)
+    return makeError(s.error());
+  return result;
+}
+
+}  // namespace relief::core::inline exporters
