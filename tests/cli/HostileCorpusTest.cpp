@@ -1,4 +1,4 @@
-// The hostile corpus (HostileCorpus.h) through every relief-cli command that reads each kind of
+// The hostile corpus (HostileCorpus.h) through the relief-cli commands that read each kind of
 // file, as a render farm would meet it. For every case and command: no signal and no sanitizer
 // report, no hang (a time limit per run), a non-zero exit, the file's name in the message, and
 // the output the command was given left byte-identical (a file already there stays as it was;
@@ -91,11 +91,24 @@ std::vector<QStringList> commandsFor(HostileKind kind, const std::string& tinyPr
   return {};
 }
 
+// Every case runs the kind's first command (the one that only inspects the file) and one of the
+// others in turn, so each command meets every third or so of the corpus and every file is read
+// in full once. The commands past the first share their reader (loadImage, the texture and
+// preset loaders), and running each file through all of them took a third of CI's time budget.
+std::vector<QStringList> commandsForCase(std::size_t index, HostileKind kind,
+                                         const std::string& tinyPreset) {
+  const std::vector<QStringList> all = commandsFor(kind, tinyPreset);
+  if (all.size() <= 2)
+    return all;
+  return {all.front(), all[1 + index % (all.size() - 1)]};
+}
+
 std::vector<PlannedRun> plan(const std::vector<HostileCase>& cases, const std::string& outputs,
                              const std::string& tinyPreset) {
   std::vector<PlannedRun> runs;
-  for (const HostileCase& hostile : cases) {
-    for (QStringList arguments : commandsFor(hostile.kind, tinyPreset)) {
+  for (std::size_t index = 0; index < cases.size(); ++index) {
+    const HostileCase& hostile = cases[index];
+    for (QStringList arguments : commandsForCase(index, hostile.kind, tinyPreset)) {
       if (hostile.problemsAreWarnings &&
           arguments.mid(0, 2).join(' ') == QStringLiteral("preset info"))
         continue;  // prints the problems as warnings by design
