@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package that Relief's build, tests and app need. Safe to run again:
 # it only calls apt when something is missing. Uses sudo when not run as root.
-# --bench also installs what the benchmarks compare against (OpenCV for bench-generate).
+# --bench also installs what the benchmarks compare against (OpenCV, NVIDIA Texture Tools).
 set -euo pipefail
 
 packages=(
@@ -29,8 +29,8 @@ if ! command -v npm >/dev/null 2>&1; then
 fi
 
 if [ "${1:-}" = "--bench" ]; then
-  # OpenCV for bench-generate.
-  packages+=(python3-opencv)
+  # OpenCV for bench-generate and bench-cli; nvcompress (NVIDIA Texture Tools 2) for bench-cli.
+  packages+=(python3-opencv libnvtt-bin)
 fi
 
 missing=()
