@@ -653,6 +653,23 @@ TEST(Cli, ExportWritesEachKindFromASample) {
   EXPECT_EQ(godot.exitCode, 0) << godot.err;
   EXPECT_NE(readBytes(folder + "/godot/tiles.tres").find("heightmap_scale = 1.5"),
             std::string::npos);  // tiles: heightScale 0.015
+
+  // The engine kinds report their main file and notes as JSON too.
+  for (const char* kind : {"unreal", "unity", "unity-hdrp"}) {
+    CliRun engine =
+        runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(samplePreset("tiles")),
+                QStringLiteral("--to"), QString::fromLatin1(kind), QStringLiteral("--out"),
+                q(folder + "/" + kind), QStringLiteral("--json")});
+    EXPECT_EQ(engine.exitCode, 0) << kind << ": " << engine.err;
+    const QJsonObject result =
+        QJsonDocument::fromJson(QByteArray::fromStdString(engine.out)).object();
+    EXPECT_EQ(result.value(QStringLiteral("kind")).toString(), QString::fromLatin1(kind));
+    EXPECT_TRUE(
+        std::filesystem::exists(result.value(QStringLiteral("written")).toString().toStdString()))
+        << kind;
+  }
+  EXPECT_NE(readBytes(folder + "/unity-hdrp/tiles.mat").find("_HeightPoMAmplitude: 1.5"),
+            std::string::npos);  // 0.015 texture widths of a 1 m primitive: 1.5 cm
 }
 
 TEST(Cli, ExportRefusesBadRequests) {
