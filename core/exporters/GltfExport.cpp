@@ -69,10 +69,8 @@ QJsonValue parameterJson(const ParameterSpec& spec, double value) {
 }  // namespace
 
 Result<std::string> exportGltf(const Preset& preset, const Mesh& mesh, const std::string& folder) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec)
-    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  if (Status made = makeExportFolder(folder); !made)
+    return makeError(made.error());
   if (mesh.vertices.empty() || mesh.indices.empty())
     return makeError("the mesh is empty");
   const Material& material = preset.material;

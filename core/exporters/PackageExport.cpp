@@ -11,6 +11,14 @@
 
 namespace relief::core::inline exporters {
 
+Status makeExportFolder(const std::string& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec)
+    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  return {};
+}
+
 std::string exportStem(const Material& material) {
   std::string stem = material.name().empty() ? std::string("material") : material.name();
   // File systems allow 255 bytes a name, and a name runs through every error message: a few
@@ -58,10 +66,8 @@ Status writeCompressed(const Preset& preset, MapSlot slot, const std::string& fo
 
 Result<std::string> exportPackage(const Preset& preset, const std::string& folder,
                                   const PackageOptions& options, const WorkControl& control) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec)
-    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  if (Status made = makeExportFolder(folder); !made)
+    return makeError(made.error());
   const std::string stem = exportStem(preset.material);
   Preset packaged = preset;
   for (MapSlot slot : kAllMapSlots) {
@@ -100,6 +106,7 @@ Result<std::string> exportPackage(const Preset& preset, const std::string& folde
   if (std::filesystem::path(packaged.view.mesh).has_extension()) {
     const std::filesystem::path source(packaged.view.mesh);
     const std::filesystem::path copy = std::filesystem::path(folder) / source.filename();
+    std::error_code ec;
     std::filesystem::copy_file(source, copy, std::filesystem::copy_options::overwrite_existing, ec);
     if (ec)
       return makeError(source.string() + ": cannot copy the mesh (" + ec.message() + ")");

@@ -33,6 +33,9 @@ Result<std::string> exportPackage(const Preset& preset, const std::string& folde
                                   const PackageOptions& options = {},
                                   const WorkControl& control = {});
 
+// Creates the export folder (and its parents); fails with a message naming it.
+Status makeExportFolder(const std::string& folder);
+
 // The file name stem exports use: the material's name, or "material", made safe for files.
 std::string exportStem(const Material& material);
 

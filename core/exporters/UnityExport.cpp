@@ -187,10 +187,8 @@ double hdrpPomAmplitudeCentimetres(double heightScale, double primitiveMetres) {
 
 Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& folder,
                                        UnityPipeline pipeline) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec)
-    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  if (Status made = makeExportFolder(folder); !made)
+    return makeError(made.error());
   const Material& material = preset.material;
   const std::string stem = exportStem(material);
   const bool urp = pipeline == UnityPipeline::Urp;

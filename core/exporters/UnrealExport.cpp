@@ -34,10 +34,8 @@ double unrealReferencePlane(double heightScale, double heightBias) {
 }
 
 Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string& folder) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec)
-    return makeError(folder + ": cannot create the folder (" + ec.message() + ")");
+  if (Status made = makeExportFolder(folder); !made)
+    return makeError(made.error());
   const Material& material = preset.material;
   const std::string stem = exportStem(material);
   const std::filesystem::path directory(folder);
