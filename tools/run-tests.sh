@@ -9,7 +9,10 @@ jobs=$(nproc)
 
 tools/check-format.sh
 
+# -g1 (line tables: sanitizer reports keep file and line) compiles a quarter faster than -g,
+# which keeps CI's fresh build within its time budget; reconfigure with -g to debug variables.
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DRELIEF_STRICT=ON -DRELIEF_SANITIZE=ON -DRELIEF_BUILD_TESTS=ON
 cmake --build "$build" -j "$jobs"
 # The glTF export test's validator; when npm cannot reach its registry the test says SKIPPED.
