@@ -13,6 +13,7 @@
 #include <QVector3D>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -23,6 +24,7 @@ using core::MapSlot;
 using core::ParamId;
 
 constexpr int kFirstMapUnit = 0;
+constexpr int kPyramidUnit = kFirstMapUnit + int(core::kMapSlotCount);  // the quadtree's
 
 QMatrix4x4 toQt(const glm::mat4& m) {
   // QMatrix4x4's float constructor takes row-major values; glm stores columns.
@@ -172,6 +174,12 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   for (MapSlot slot : core::kAllMapSlots) {
     m_textures.texture(material, slot).bind(unsigned(kFirstMapUnit + int(slot)));
   }
+  if (material.technique() == core::Technique::Quadtree) {
+    QOpenGLTexture& pyramid = m_textures.heightPyramid(material);
+    pyramid.bind(unsigned(kPyramidUnit));
+    program.setUniformValue("uHeightPyramid", kPyramidUnit);
+    program.setUniformValue("uHeightPyramidLevels", pyramid.mipLevels());
+  }
   // A natively uploaded two-channel normal (BC5, EAC RG11, DXT5nm swizzled) has no Z texel.
   const auto& normal = material.map(MapSlot::Normal).compressed;
   program.setUniformValue(
@@ -310,6 +318,26 @@ core::Result<core::Image> MaterialRenderer::renderToImage(const FrameSettings& f
                      image.pixel(0, height - 1 - y));
   }
   return image;
+}
+
+core::Result<double> MaterialRenderer::medianFrameMilliseconds(const FrameSettings& frame,
+                                                               int width, int height, int frames) {
+  QOpenGLFramebufferObject fbo(width, height, QOpenGLFramebufferObject::Depth);
+  if (!fbo.isValid())
+    return core::makeError("cannot create a " + std::to_string(width) + "x" +
+                           std::to_string(height) + " framebuffer (out of GPU memory?)");
+  std::vector<double> times;
+  for (int i = 0; i <= std::max(frames, 1); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    if (core::Status status = render(frame, width, height, fbo.handle()); !status)
+      return core::makeError(status.error());
+    glFinish();
+    const auto end = std::chrono::steady_clock::now();
+    if (i > 0)
+      times.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+  }
+  std::nth_element(times.begin(), times.begin() + std::ptrdiff_t(times.size() / 2), times.end());
+  return times[times.size() / 2];
 }
 
 }  // namespace relief::renderer

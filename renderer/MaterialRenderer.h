@@ -45,6 +45,11 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   // Renders into an offscreen framebuffer and reads it back: RGBA8 sRGB for Display output,
   // RGBA32F for data. Rows top first.
   core::Result<core::Image> renderToImage(const FrameSettings& frame, int width, int height);
+  // The median time of `frames` renders of `frame` into a framebuffer of the size, each drawn
+  // and finished (glFinish) on the CPU clock, after one untimed frame (compiling, uploading).
+  // GL timer queries are not used: llvmpipe reports nonsense for them.
+  core::Result<double> medianFrameMilliseconds(const FrameSettings& frame, int width, int height,
+                                               int frames);
 
   // Largest width or height renderToImage accepts on this GPU.
   int maxImageSize();

@@ -76,6 +76,13 @@ core::Result<core::Image> OffscreenRenderer::render(const RenderView& view, int 
   return render(frame, width, height);
 }
 
+core::Result<double> OffscreenRenderer::medianFrameMilliseconds(const FrameSettings& frame,
+                                                                int width, int height, int frames) {
+  if (!makeCurrent())
+    return core::makeError("cannot make the offscreen OpenGL context current");
+  return m_renderer->medianFrameMilliseconds(frame, width, height, frames);
+}
+
 core::Result<ErrorViewInputs> OffscreenRenderer::renderErrorViewInputs(const FrameSettings& frame,
                                                                        int width, int height) {
   if (!makeCurrent())

@@ -37,6 +37,9 @@ class OffscreenRenderer {
   core::Result<core::Image> render(const FrameSettings& frame, int width, int height);
   // The shaded material (Display output, no debug view).
   core::Result<core::Image> render(const RenderView& view, int width, int height);
+  // The median of `frames` timed frames (MaterialRenderer::medianFrameMilliseconds).
+  core::Result<double> medianFrameMilliseconds(const FrameSettings& frame, int width, int height,
+                                               int frames);
   // The two float passes of the error view (see ErrorView.h).
   core::Result<ErrorViewInputs> renderErrorViewInputs(const FrameSettings& frame, int width,
                                                       int height);

@@ -18,6 +18,8 @@ const char* techniqueDefine(core::Technique technique) {
       return "TECHNIQUE_POM";
     case core::Technique::Relief:
       return "TECHNIQUE_RELIEF";
+    case core::Technique::Quadtree:
+      return "TECHNIQUE_QUADTREE";
   }
   return "TECHNIQUE_NORMAL";
 }

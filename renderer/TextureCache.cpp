@@ -3,6 +3,7 @@
 
 #include "core/compression/Compressor.h"
 #include "core/compression/MipChain.h"
+#include "core/tracing/MaxMipPyramid.h"
 #include "renderer/CompressedUpload.h"
 
 #include <algorithm>
@@ -210,6 +211,52 @@ std::optional<bool> TextureCache::uploadedNatively(const core::Material& materia
   return m_uploads[Key{material.image(slot), slot}].native;
 }
 
+QOpenGLTexture& TextureCache::heightPyramid(const core::Material& material) {
+  const bool packed = material.parameterFlag(core::ParamId::HeightInNormalAlpha);
+  const MapSlot slot = packed ? MapSlot::Normal : MapSlot::Height;
+  std::shared_ptr<const Image> image = material.map(slot).image;
+  const bool depth = material.parameterFlag(core::ParamId::HeightIsDepth);
+  // An empty slot keys as null (kept while the slot stays empty) and reads the neutral texel.
+  PyramidEntry& entry = m_pyramids[PyramidKey{image.get(), packed, depth}];
+  if (!image)
+    image = neutralImage(slot);
+  if (entry.texture)
+    return *entry.texture;
+  entry.image = image;
+  // The pyramid must bound what the shader fetches: a compression preview's decoded texels.
+  const Image* source = image.get();
+  core::Result<Image> decoded = core::makeError("");
+  if (const auto& compressed = material.map(slot).compressed) {
+    decoded = core::decodeAsMap(*compressed, 0);
+    if (decoded)
+      source = &decoded.value();
+  }
+  core::MaxMipPyramid pyramid = core::buildMaxMipPyramid(*source, packed ? 3 : 0, depth);
+  if (packed) {
+    // The normal texture keeps 16 bits; a bound a rounding below its alpha could miss a hit.
+    for (core::MaxMipLevel& level : pyramid.levels) {
+      for (float& value : level.values)
+        value += 1.0f / 65535.0f;
+    }
+  }
+  auto texture = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
+  texture->setSize(pyramid.levels[0].width, pyramid.levels[0].height);
+  texture->setMipLevels(int(pyramid.levels.size()));
+  texture->setMipMaxLevel(int(pyramid.levels.size()) - 1);
+  texture->setMinMagFilters(QOpenGLTexture::NearestMipMapNearest, QOpenGLTexture::Nearest);
+  texture->setWrapMode(QOpenGLTexture::ClampToEdge);
+  texture->setFormat(QOpenGLTexture::R32F);
+  texture->allocateStorage(QOpenGLTexture::Red, QOpenGLTexture::Float32);
+  QOpenGLPixelTransferOptions unpack;
+  unpack.setAlignment(1);
+  for (std::size_t level = 0; level < pyramid.levels.size(); ++level) {
+    texture->setData(int(level), QOpenGLTexture::Red, QOpenGLTexture::Float32,
+                     pyramid.levels[level].values.data(), &unpack);
+  }
+  entry.texture = std::move(texture);
+  return *entry.texture;
+}
+
 void TextureCache::releaseUnused(std::initializer_list<const core::Material*> materials) {
   for (auto it = m_uploads.begin(); it != m_uploads.end();) {
     bool used = false;
@@ -217,6 +264,15 @@ void TextureCache::releaseUnused(std::initializer_list<const core::Material*> ma
       used = used || material->image(it->first.second) == it->first.first;
     }
     it = used ? std::next(it) : m_uploads.erase(it);
+  }
+  for (auto it = m_pyramids.begin(); it != m_pyramids.end();) {
+    bool used = false;
+    for (const core::Material* material : materials) {
+      used = used || (material->image(it->first.packed ? MapSlot::Normal : MapSlot::Height) ==
+                          it->first.image &&
+                      material->parameterFlag(core::ParamId::HeightIsDepth) == it->first.depth);
+    }
+    it = used ? std::next(it) : m_pyramids.erase(it);
   }
 }
 
@@ -231,6 +287,7 @@ void TextureCache::setNativeCompressedUploads(bool native) {
 
 void TextureCache::release() {
   m_uploads.clear();
+  m_pyramids.clear();
   for (auto& neutral : m_neutral)
     neutral.reset();
 }

@@ -28,6 +28,10 @@ class TextureCache {
   // the driver's decoding with ours, and for tests). On by default.
   void setNativeCompressedUploads(bool native);
   bool nativeCompressedUploads() const { return m_nativeCompressed; }
+  // The maximum-mipmap pyramid (core/tracing/MaxMipPyramid.h) of the height the shaders read
+  // (the height map, or the normal map's alpha when packed, inverted for depth maps; a
+  // compression preview's decoded texels), built on first use: R32F, nearest, one level each.
+  QOpenGLTexture& heightPyramid(const core::Material& material);
   // Frees the uploads that none of `materials` uses any more.
   void releaseUnused(std::initializer_list<const core::Material*> materials);
   void release();
@@ -41,6 +45,17 @@ class TextureCache {
     bool native = false;      // compressed blocks uploaded as they are
   };
   std::map<Key, Entry> m_uploads;
+  struct PyramidKey {
+    const core::Image* image;
+    bool packed;
+    bool depth;
+    auto operator<=>(const PyramidKey&) const = default;
+  };
+  struct PyramidEntry {
+    std::shared_ptr<const core::Image> image;
+    std::unique_ptr<QOpenGLTexture> texture;
+  };
+  std::map<PyramidKey, PyramidEntry> m_pyramids;
   std::array<std::unique_ptr<QOpenGLTexture>, core::kMapSlotCount> m_neutral;
   bool m_nativeCompressed = true;
 };

@@ -57,7 +57,7 @@ void main() {
 
   ParallaxResult visible;
   if (fade > 0.0) {
-    visible = findVisiblePoint(entryUv, V, dx, dy, scale, bias);
+    visible = findVisiblePoint(entryUv, V, dx, dy, scale, bias, mipLevel);
   } else {
     visible.uv = entryUv;
     visible.height = sampleHeight(entryUv, dx, dy);

@@ -25,7 +25,9 @@
 #include <QRegularExpression>
 #include <QSurfaceFormat>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace relief::cli {
 namespace {
@@ -97,6 +99,15 @@ CliOptions renderOptions() {
   options.push_back(strictOption(QStringLiteral("rendering")));
   options.push_back(jsonOption());
   options.push_back(
+      {QStringLiteral("stats"),
+       {},
+       QStringLiteral("Also measure the frame's cost and print it as one JSON object: "
+                      "{\"frame_ms\": the median of 5 frames drawn and finished "
+                      "(glFinish), \"samples_per_pixel\": {\"mean\", \"p95\", "
+                      "\"max\"} height samples (texel fetches) per covered pixel, "
+                      "\"pixels\": covered pixels}. With --json, in its object."),
+       {}});
+  options.push_back(
       {QStringLiteral("format"),
        QStringLiteral("png|exr"),
        QStringLiteral("png (8-bit colours, legends on heat maps) or exr (float: raw values of "
@@ -114,6 +125,7 @@ struct RenderRequest {
   QString outPath;
   bool exr = false;
   bool json = false;
+  bool stats = false;
   core::ViewState presetView;  // the preset's camera, light and mesh, used unless overridden
 };
 
@@ -222,6 +234,7 @@ std::optional<int> parseOutput(const QCommandLineParser& parser, RenderRequest& 
   }
   request.exr = format == QStringLiteral("exr");
   request.json = parser.isSet(QStringLiteral("json"));
+  request.stats = parser.isSet(QStringLiteral("stats"));
   const core::ImageFileType* type = core::imageFileTypeForPath(request.outPath.toStdString());
   if (request.exr && outSuffix != QStringLiteral("exr")) {
     printError(QStringLiteral("--out %1: --format exr writes an .exr file").arg(request.outPath));
@@ -354,6 +367,48 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
   return std::nullopt;
 }
 
+// The frame's cost (--stats): the median frame time, and the steps view's height samples per
+// covered pixel (its float output: samples in red, coverage in alpha).
+core::Result<QJsonObject> measureCost(renderer::OffscreenRenderer& offscreen,
+                                      const RenderRequest& request) {
+  constexpr int kTimedFrames = 5;
+  renderer::FrameSettings shaded = request.frame;
+  shaded.debugView = core::DebugView::Shading;
+  shaded.output = renderer::FrameOutput::Display;
+  core::Result<double> milliseconds =
+      offscreen.medianFrameMilliseconds(shaded, request.width, request.height, kTimedFrames);
+  if (!milliseconds)
+    return core::makeError(milliseconds.error());
+  renderer::FrameSettings steps = request.frame;
+  steps.debugView = core::DebugView::Steps;
+  steps.output = renderer::FrameOutput::FloatData;
+  core::Result<core::Image> counts = offscreen.render(steps, request.width, request.height);
+  if (!counts)
+    return core::makeError(counts.error());
+  std::vector<float> samples;
+  for (std::size_t p = 0; p < counts->pixelCount(); ++p) {
+    const float* pixel = counts->data() + p * 4;
+    if (pixel[3] > 0.5f)
+      samples.push_back(pixel[0]);
+  }
+  double mean = 0.0, p95 = 0.0, most = 0.0;
+  if (!samples.empty()) {
+    for (float s : samples)
+      mean += s;
+    mean /= double(samples.size());
+    most = *std::max_element(samples.begin(), samples.end());
+    const auto rank = samples.begin() + std::ptrdiff_t(samples.size() * 95 / 100);
+    std::nth_element(samples.begin(), rank, samples.end());
+    p95 = *rank;
+  }
+  return QJsonObject{
+      {QStringLiteral("frame_ms"), milliseconds.value()},
+      {QStringLiteral("samples_per_pixel"), QJsonObject{{QStringLiteral("mean"), mean},
+                                                        {QStringLiteral("p95"), p95},
+                                                        {QStringLiteral("max"), most}}},
+      {QStringLiteral("pixels"), double(samples.size())}};
+}
+
 // Fills `request` from the command line; returns an exit code on failure.
 std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest& request) {
   const QStringList positional = parser.positionalArguments();
@@ -433,6 +488,19 @@ int runRender(int argc, char* argv[]) {
       !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
+  }
+  if (request.stats) {
+    core::Result<QJsonObject> cost = measureCost(*offscreen.value(), request);
+    if (!cost) {
+      printError(QStringLiteral("render --stats: ") + QString::fromStdString(cost.error()));
+      return kExitFailure;
+    }
+    if (!request.json) {
+      printJson(cost.value());
+      return kExitOk;
+    }
+    for (auto it = cost->begin(); it != cost->end(); ++it)
+      report.insert(it.key(), it.value());
   }
   if (request.json) {
     report.insert(QStringLiteral("output"), request.outPath);

@@ -144,8 +144,8 @@ bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode s
   switch (spec.use) {
     case ParamUse::Always:
       return true;
-    case ParamUse::Marching:
-      return isMarchingTechnique(technique);
+    case ParamUse::Marching:  // the layered marches' sample counts; quadtree needs none
+      return isMarchingTechnique(technique) && technique != Technique::Quadtree;
     case ParamUse::Refinement:
       return technique == Technique::Relief;
     case ParamUse::Shadows:

@@ -54,7 +54,7 @@ constexpr std::size_t kParamCount = std::size_t(ParamId::Count);
 // When a parameter has an effect; the Parameters panel greys out the others.
 enum class ParamUse {
   Always,
-  Marching,     // techniques that march along the view ray (isMarchingTechnique)
+  Marching,     // the layered marches (steep, POM, relief): their sample counts
   Refinement,   // relief mapping's binary refinement
   Shadows,      // self-shadowing on, hard or soft
   SoftShadows,  // soft self-shadowing

@@ -20,11 +20,12 @@ constexpr std::array kTechniques = {
     TechniqueInfo{Technique::Steep, "steep", "Steep parallax"},
     TechniqueInfo{Technique::Pom, "pom", "Parallax occlusion mapping"},
     TechniqueInfo{Technique::Relief, "relief", "Relief mapping (binary refinement)"},
+    TechniqueInfo{Technique::Quadtree, "quadtree", "Quadtree (maximum mipmap, exact)"},
 };
 
 constexpr std::array kTechniqueList = {
-    Technique::Normal, Technique::Parallax, Technique::ParallaxLimited,
-    Technique::Steep,  Technique::Pom,      Technique::Relief};
+    Technique::Normal, Technique::Parallax, Technique::ParallaxLimited, Technique::Steep,
+    Technique::Pom,    Technique::Relief,   Technique::Quadtree};
 
 }  // namespace
 
@@ -42,7 +43,7 @@ std::string_view techniqueLabel(Technique technique) {
 
 bool isMarchingTechnique(Technique technique) {
   return technique == Technique::Steep || technique == Technique::Pom ||
-         technique == Technique::Relief;
+         technique == Technique::Relief || technique == Technique::Quadtree;
 }
 
 std::optional<Technique> findTechnique(std::string_view name) {

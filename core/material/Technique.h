@@ -15,6 +15,7 @@ enum class Technique {
   Steep,            // layered linear search, first layer below the surface, no interpolation
   Pom,              // parallax occlusion mapping as reference 001 gives it
   Relief,           // linear search, then binary refinement
+  Quadtree,         // exact: maximum-mipmap traversal to the bilinear cell (Tevs et al. 2008)
 };
 
 // Whether the technique marches along the view ray (and so can self-shadow and has a cost

@@ -106,8 +106,15 @@ ParallaxResult marchHeightField(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, 
   return result;
 }
 
-ParallaxResult findVisiblePoint(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias) {
-#if defined(TECHNIQUE_PARALLAX)
+#if defined(TECHNIQUE_QUADTREE)
+#include "quadtree.glsl"
+#endif
+
+ParallaxResult findVisiblePoint(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias,
+                                float mipLevel) {
+#if defined(TECHNIQUE_QUADTREE)
+  return traceQuadtree(uv, V, scale, bias, mipLevel);
+#elif defined(TECHNIQUE_PARALLAX)
   return parallaxOffset(uv, V, dx, dy, scale, bias, false);
 #elif defined(TECHNIQUE_PARALLAX_LIMITED)
   return parallaxOffset(uv, V, dx, dy, scale, bias, true);

@@ -183,6 +183,41 @@ TEST(Cli, RenderWritesThePresetsImage) {
   EXPECT_TRUE(matchesBaseline(image.value(), "bricks_plane", 64.0 / 255.0, 0.5 / 255.0));
 }
 
+// --stats: a layered march of n layers takes 1 to n + 1 height samples a pixel (parallax.glsl
+// stops at the first layer below the surface), whatever the view; the quadtree counts its
+// pyramid fetches and four texels for each cell it intersects.
+TEST(Cli, RenderStatsCountHeightSamplesPerCoveredPixel) {
+  const auto stats = [](const char* technique) {
+    const std::string out = scratchFolder() + "/stats-" + technique + ".png";
+    CliRun run = runCli(
+        {QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--out"), q(out),
+         QStringLiteral("--size"), QStringLiteral("160x100"), QStringLiteral("--technique"),
+         QString::fromLatin1(technique), QStringLiteral("--set"), QStringLiteral("minSamples=8"),
+         QStringLiteral("--set"), QStringLiteral("maxSamples=8"), QStringLiteral("--set"),
+         QStringLiteral("shadowMode=off"), QStringLiteral("--stats")});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return QJsonDocument::fromJson(QByteArray::fromStdString(run.out)).object();
+  };
+  const QJsonObject pom = stats("pom");
+  EXPECT_GT(pom.value(QStringLiteral("frame_ms")).toDouble(), 0.0);
+  EXPECT_GT(pom.value(QStringLiteral("pixels")).toDouble(), 1000.0);
+  const QJsonObject samples = pom.value(QStringLiteral("samples_per_pixel")).toObject();
+  EXPECT_GE(samples.value(QStringLiteral("mean")).toDouble(), 1.0);
+  EXPECT_LE(samples.value(QStringLiteral("max")).toDouble(), 9.0);
+  EXPECT_LE(samples.value(QStringLiteral("p95")).toDouble(),
+            samples.value(QStringLiteral("max")).toDouble());
+  const QJsonObject quadtree = stats("quadtree");
+  EXPECT_EQ(quadtree.value(QStringLiteral("pixels")).toDouble(),
+            pom.value(QStringLiteral("pixels")).toDouble());  // the same surface is covered
+  // At least one pyramid fetch everywhere (minified, as at this size, the walk stops at the
+  // level the map is read at, without a cell's four texels).
+  EXPECT_GE(quadtree.value(QStringLiteral("samples_per_pixel"))
+                .toObject()
+                .value(QStringLiteral("mean"))
+                .toDouble(),
+            1.0);
+}
+
 TEST(Cli, RenderTakesMapsAndParametersAndViewOptions) {
   const std::string out = scratchFolder() + "/maps.png";
   CliRun run = runCli({QStringLiteral("render"),
