@@ -86,6 +86,16 @@ class ParallaxAccuracy : public OffscreenTest {
     material.setParameter(ParamId::MaxSamples, maxSamples);
     material.setParameter(ParamId::RefinementSteps, refinement);
     material.setParameter(ParamId::ShadowMode, double(core::ShadowMode::Off));
+    return measureMaterial(material, field.width(), pitchDeg);
+  }
+
+  // The same for any material; `fieldWidth` is the height map's width in texels (the layer
+  // spacing printed is in its texels).
+  Measurement measureMaterial(const core::Material& material, int fieldWidth, float pitchDeg) {
+    const core::Technique technique = material.technique();
+    const int minSamples = int(material.parameter(ParamId::MinSamples));
+    const int maxSamples = int(material.parameter(ParamId::MaxSamples));
+    const double scale = material.parameter(ParamId::HeightScale);
     offscreen().setMaterial(material);
     offscreen().setMesh(core::makePlane());
 
@@ -120,7 +130,7 @@ class ParallaxAccuracy : public OffscreenTest {
         const int layers = std::max(int(maxSamples + (minSamples - maxSamples) * vz), 1);
         result.meanErrorTexels += error;
         all.push_back(error);
-        result.meanLayerTexels += kScale * vxy / vz / layers * kFieldSize;
+        result.meanLayerTexels += scale * vxy / vz / layers * fieldWidth;
         ++result.pixels;
       }
     }
@@ -209,6 +219,40 @@ TEST_F(ParallaxAccuracy, QuadtreeKeepsOneTexelWallsPomStepsOver) {
   EXPECT_GT(pom.p95ErrorTexels, 1.0);  // POM passes walls between its layers
   EXPECT_LT(quadtree.p95ErrorTexels, 0.02);
   EXPECT_LT(quadtree.meanErrorTexels, 0.05 * pom.meanErrorTexels);
+}
+
+// The paths a plain height map does not take: a non-square map whose sizes are not powers of
+// two (odd pyramid levels, wrapping at both edges), depths (1 - h) packed in a normal map's
+// alpha (the 16-bit normal texture), the middle of the relief on the surface, and tiling 2.
+TEST_F(ParallaxAccuracy, QuadtreeIsExactForPackedDepthOnAnOddMap) {
+  const int width = 40, height = 24;
+  auto normals = std::make_shared<Image>(width, height, 4);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double h = (x % 10 == 0) ? 1.0 : 0.5 + 0.4 * std::sin(0.3 * x) * std::cos(0.5 * y);
+      normals->at(x, y, 0) = 0.5f;
+      normals->at(x, y, 1) = 0.5f;
+      normals->at(x, y, 2) = 1.0f;
+      normals->at(x, y, 3) = float(1.0 - h);  // a depth
+    }
+  }
+  core::Material material;
+  material.setMap(core::MapSlot::Normal, normals);
+  material.setTechnique(core::Technique::Quadtree);
+  material.setParameter(ParamId::HeightInNormalAlpha, 1.0);
+  material.setParameter(ParamId::HeightIsDepth, 1.0);
+  material.setParameter(ParamId::HeightScale, kScale);
+  material.setParameter(ParamId::HeightBias, -kScale / 2);
+  material.setParameter(ParamId::Tiling, 2.0);
+  material.setParameter(ParamId::ShadowMode, double(core::ShadowMode::Off));
+  for (float pitch : {85.0f, 20.0f}) {
+    const Measurement m = measureMaterial(material, width, pitch);
+    ASSERT_GT(m.pixels, 20000) << "pitch " << pitch;
+    // The 16-bit alpha is what both the GPU and the tracer read (the tracer from the float
+    // image): a depth step of 1/65535 moves a grazing hit by about 0.001 texel.
+    EXPECT_LT(m.meanErrorTexels, 0.01) << "pitch " << pitch;
+    EXPECT_LT(m.p95ErrorTexels, 0.02) << "pitch " << pitch;
+  }
 }
 
 }  // namespace
