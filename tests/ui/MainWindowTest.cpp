@@ -15,6 +15,7 @@
 #include "ui/window/MainWindow.h"
 
 #include <QCheckBox>
+#include <QLabel>
 #include <QSlider>
 #include <QStyle>
 #include <QStyleOptionSlider>
@@ -90,6 +91,27 @@ TEST_F(MainWindowTest, MovingASliderChangesTheFrameAndUndoRestoresIt) {
   EXPECT_EQ(compareImages(before, grabbed()).maxError, 0.0);
   undo->redo();
   EXPECT_EQ(m_window->document()->material().parameter(core::ParamId::Tiling), dragged);
+}
+
+// The status bar's samples per pixel follows the view once it rests: a layered march of n
+// layers takes 1 to n + 1 height samples a pixel (parallax.glsl).
+TEST_F(MainWindowTest, StatusBarShowsHeightSamplesPerPixelOnceTheViewRests) {
+  auto* label = m_window->findChild<QLabel*>(QStringLiteral("samplesPerPixel"));
+  ASSERT_NE(label, nullptr);
+  document()->setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Off));
+  document()->setParameter(core::ParamId::MinSamples, 4.0);
+  document()->setParameter(core::ParamId::MaxSamples, 4.0);
+  const auto shownMean = [&] { return label->text().section(QLatin1Char(' '), 0, 0).toDouble(); };
+  label->clear();
+  QTRY_VERIFY_WITH_TIMEOUT(!label->text().isEmpty(), 10000);
+  EXPECT_GE(shownMean(), 1.0);
+  EXPECT_LE(shownMean(), 5.0);
+  // More layers, more samples: the label follows the change.
+  document()->setParameter(core::ParamId::MinSamples, 32.0);
+  document()->setParameter(core::ParamId::MaxSamples, 32.0);
+  const double before = shownMean();
+  QTRY_VERIFY_WITH_TIMEOUT(shownMean() > before + 1.0, 10000);
+  EXPECT_LE(shownMean(), 33.0);
 }
 
 TEST_F(MainWindowTest, CheckBoxParameterChangesTheFrame) {

@@ -28,8 +28,15 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
     : QOpenGLWidget(parent),
       m_document(document),
       m_mesh(core::makePlane()),
+      m_samplesTimer(new QTimer(this)),
       m_errorTask(new BackgroundTask(this)) {
   setMinimumSize(320, 240);
+  m_samplesTimer->setSingleShot(true);
+  m_samplesTimer->setInterval(kSamplesDelayMs);
+  connect(m_samplesTimer, &QTimer::timeout, this, [this] {
+    m_measureSamples = true;
+    update();
+  });
   setFocusPolicy(Qt::StrongFocus);
   setToolTip(
       tr("Drag: orbit the camera\n"
@@ -298,8 +305,38 @@ void ViewportWidget::paintGL() {
   // draws on demand, so the stall never costs an animation frame.
   context()->functions()->glFinish();
   const double milliseconds = double(timer.nsecsElapsed()) / 1.0e6;
+  // After the timing, so the number is the frame's alone; every other frame restarts the wait.
+  if (m_measureSamples) {
+    m_measureSamples = false;
+    measureSamples(std::max(pixelWidth / 4, 1), std::max(pixelHeight / 4, 1));
+  } else {
+    m_samplesTimer->start();
+  }
   paintOverlays();
   Q_EMIT frameRendered(milliseconds);
+}
+
+void ViewportWidget::measureSamples(int pixelWidth, int pixelHeight) {
+  renderer::FrameSettings frame = shownFrame().second;
+  frame.split.reset();  // the live material (A)
+  frame.debugView = core::DebugView::Steps;
+  frame.output = renderer::FrameOutput::FloatData;
+  core::Result<core::Image> counts = m_renderer->renderToImage(frame, pixelWidth, pixelHeight);
+  // The measurement drew into its own framebuffer; the widget's is the one Qt composes.
+  context()->functions()->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+  if (!counts)
+    return;  // a failed render already reported itself in the frame
+  double sum = 0.0;
+  long long covered = 0;
+  for (std::size_t p = 0; p < counts->pixelCount(); ++p) {
+    const float* pixel = counts->data() + p * 4;
+    if (pixel[3] > 0.5f) {
+      sum += pixel[0];
+      ++covered;
+    }
+  }
+  if (covered > 0)
+    Q_EMIT samplesMeasured(sum / double(covered));
 }
 
 void ViewportWidget::startErrorView(int pixelWidth, int pixelHeight) {

@@ -15,6 +15,7 @@
 #include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QTimer>
 
 #include <atomic>
 #include <memory>
@@ -97,12 +98,16 @@ class ViewportWidget : public QOpenGLWidget {
 
   static constexpr float kOrbitDegreesPerPixel = 0.4f;
   static constexpr int kDividerGrabPixels = 6;
+  static constexpr int kSamplesDelayMs = 400;
 
  public Q_SLOTS:
   void frameMesh();
 
  Q_SIGNALS:
   void frameRendered(double milliseconds);
+  // Height samples (texel fetches) per covered pixel, the mean, measured once the view has
+  // rested (kSamplesDelayMs after the last frame) on a quarter-size steps view.
+  void samplesMeasured(double meanPerPixel);
   void rendererReady(const QString& description);
   void renderError(const QString& message);
   void lightChanged();
@@ -125,6 +130,7 @@ class ViewportWidget : public QOpenGLWidget {
   void releaseGlBeforeContextLoss();
   void changed();  // view, material or frame changed: redraw and drop a stale error view
   void startErrorView(int width, int height);
+  void measureSamples(int width, int height);
   void paintOverlays();
   int dividerX() const;
 
@@ -145,6 +151,10 @@ class ViewportWidget : public QOpenGLWidget {
   bool m_framePending = true;
   DragMode m_drag = DragMode::None;
   QPoint m_lastPos;
+
+  // The samples-per-pixel measurement, after the view rests.
+  QTimer* m_samplesTimer;
+  bool m_measureSamples = false;
 
   // The error view: a CPU trace per frame, in the background.
   BackgroundTask* m_errorTask;  // the error view's exact trace

@@ -47,6 +47,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_viewport(new ViewportWidget(m_document)),
       m_progress(new QProgressBar),
       m_frameTime(new QLabel),
+      m_samples(new QLabel),
       m_rendererLabel(new QLabel) {
   setWindowTitle(tr("Relief"));
   setAcceptDrops(true);
@@ -87,6 +88,10 @@ MainWindow::MainWindow(QWidget* parent)
 
   m_frameTime->setToolTip(tr("CPU time of the last frame, including waiting for the GPU"));
   m_frameTime->setMinimumWidth(110);
+  m_samples->setObjectName(QStringLiteral("samplesPerPixel"));
+  m_samples->setToolTip(
+      tr("Height samples (texel fetches) per covered pixel, the mean, measured once the view "
+         "rests; relief-cli render --stats measures the same"));
   m_compressedLabel = new QLabel(this);
   m_compressedLabel->setToolTip(
       tr("Compressed maps are uploaded as blocks (glCompressedTexImage2D) when the driver has "
@@ -98,8 +103,11 @@ MainWindow::MainWindow(QWidget* parent)
     m_compressedLabel->setVisible(!text.isEmpty());
   });
   statusBar()->addPermanentWidget(m_rendererLabel);
+  statusBar()->addPermanentWidget(m_samples);
   statusBar()->addPermanentWidget(m_frameTime);
   connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::showFrameTime);
+  connect(m_viewport, &ViewportWidget::samplesMeasured, this,
+          [this](double mean) { m_samples->setText(tr("%1 samples/px").arg(mean, 0, 'f', 1)); });
   connect(m_viewport, &ViewportWidget::rendererReady, this,
           [this](const QString& description) { m_rendererLabel->setText(description); });
   connect(m_viewport, &ViewportWidget::renderError, this, [this](const QString& message) {

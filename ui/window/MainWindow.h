@@ -90,6 +90,7 @@ class MainWindow : public QMainWindow {
   ViewToolBar* m_toolBar = nullptr;
   QProgressBar* m_progress;
   QLabel* m_frameTime;
+  QLabel* m_samples;  // height samples per pixel (ViewportWidget::samplesMeasured)
   QLabel* m_rendererLabel;
   DocumentFiles* m_files = nullptr;
   PresetLibrary* m_library = nullptr;
