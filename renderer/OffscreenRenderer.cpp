@@ -83,6 +83,13 @@ core::Result<double> OffscreenRenderer::medianFrameMilliseconds(const FrameSetti
   return m_renderer->medianFrameMilliseconds(frame, width, height, frames);
 }
 
+core::Result<SampleCount> OffscreenRenderer::countHeightSamples(const FrameSettings& frame,
+                                                                int width, int height) {
+  if (!makeCurrent())
+    return core::makeError("cannot make the offscreen OpenGL context current");
+  return relief::renderer::countHeightSamples(*m_renderer, frame, width, height);
+}
+
 core::Result<ErrorViewInputs> OffscreenRenderer::renderErrorViewInputs(const FrameSettings& frame,
                                                                        int width, int height) {
   if (!makeCurrent())

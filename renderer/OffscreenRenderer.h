@@ -9,6 +9,7 @@
 #include "core/mesh/Mesh.h"
 #include "renderer/ErrorView.h"
 #include "renderer/FrameSettings.h"
+#include "renderer/SampleCount.h"
 
 #include <memory>
 
@@ -40,6 +41,8 @@ class OffscreenRenderer {
   // The median of `frames` timed frames (MaterialRenderer::medianFrameMilliseconds).
   core::Result<double> medianFrameMilliseconds(const FrameSettings& frame, int width, int height,
                                                int frames);
+  // Height samples per covered pixel of the frame (SampleCount.h).
+  core::Result<SampleCount> countHeightSamples(const FrameSettings& frame, int width, int height);
   // The two float passes of the error view (see ErrorView.h).
   core::Result<ErrorViewInputs> renderErrorViewInputs(const FrameSettings& frame, int width,
                                                       int height);

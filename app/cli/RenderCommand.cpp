@@ -367,8 +367,7 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
   return std::nullopt;
 }
 
-// The frame's cost (--stats): the median frame time, and the steps view's height samples per
-// covered pixel (its float output: samples in red, coverage in alpha).
+// The frame's cost (--stats): the median frame time and the height samples per covered pixel.
 core::Result<QJsonObject> measureCost(renderer::OffscreenRenderer& offscreen,
                                       const RenderRequest& request) {
   constexpr int kTimedFrames = 5;
@@ -379,34 +378,16 @@ core::Result<QJsonObject> measureCost(renderer::OffscreenRenderer& offscreen,
       offscreen.medianFrameMilliseconds(shaded, request.width, request.height, kTimedFrames);
   if (!milliseconds)
     return core::makeError(milliseconds.error());
-  renderer::FrameSettings steps = request.frame;
-  steps.debugView = core::DebugView::Steps;
-  steps.output = renderer::FrameOutput::FloatData;
-  core::Result<core::Image> counts = offscreen.render(steps, request.width, request.height);
-  if (!counts)
-    return core::makeError(counts.error());
-  std::vector<float> samples;
-  for (std::size_t p = 0; p < counts->pixelCount(); ++p) {
-    const float* pixel = counts->data() + p * 4;
-    if (pixel[3] > 0.5f)
-      samples.push_back(pixel[0]);
-  }
-  double mean = 0.0, p95 = 0.0, most = 0.0;
-  if (!samples.empty()) {
-    for (float s : samples)
-      mean += s;
-    mean /= double(samples.size());
-    most = *std::max_element(samples.begin(), samples.end());
-    const auto rank = samples.begin() + std::ptrdiff_t(samples.size() * 95 / 100);
-    std::nth_element(samples.begin(), rank, samples.end());
-    p95 = *rank;
-  }
+  core::Result<renderer::SampleCount> samples =
+      offscreen.countHeightSamples(request.frame, request.width, request.height);
+  if (!samples)
+    return core::makeError(samples.error());
   return QJsonObject{
       {QStringLiteral("frame_ms"), milliseconds.value()},
-      {QStringLiteral("samples_per_pixel"), QJsonObject{{QStringLiteral("mean"), mean},
-                                                        {QStringLiteral("p95"), p95},
-                                                        {QStringLiteral("max"), most}}},
-      {QStringLiteral("pixels"), double(samples.size())}};
+      {QStringLiteral("samples_per_pixel"), QJsonObject{{QStringLiteral("mean"), samples->mean},
+                                                        {QStringLiteral("p95"), samples->p95},
+                                                        {QStringLiteral("max"), samples->max}}},
+      {QStringLiteral("pixels"), double(samples->pixels)}};
 }
 
 // Fills `request` from the command line; returns an exit code on failure.

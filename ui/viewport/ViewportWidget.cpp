@@ -7,6 +7,7 @@
 #include "renderer/HeatmapLegend.h"
 #include "renderer/ImageConversion.h"
 #include "renderer/MaterialRenderer.h"
+#include "renderer/SampleCount.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/tasks/BackgroundTask.h"
 #include "ui/window/QtText.h"
@@ -319,24 +320,12 @@ void ViewportWidget::paintGL() {
 void ViewportWidget::measureSamples(int pixelWidth, int pixelHeight) {
   renderer::FrameSettings frame = shownFrame().second;
   frame.split.reset();  // the live material (A)
-  frame.debugView = core::DebugView::Steps;
-  frame.output = renderer::FrameOutput::FloatData;
-  core::Result<core::Image> counts = m_renderer->renderToImage(frame, pixelWidth, pixelHeight);
-  // The measurement drew into its own framebuffer; the widget's is the one Qt composes.
+  core::Result<renderer::SampleCount> count =
+      renderer::countHeightSamples(*m_renderer, frame, pixelWidth, pixelHeight);
+  // The count drew into its own framebuffer; the widget's is the one Qt composes.
   context()->functions()->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
-  if (!counts)
-    return;  // a failed render already reported itself in the frame
-  double sum = 0.0;
-  long long covered = 0;
-  for (std::size_t p = 0; p < counts->pixelCount(); ++p) {
-    const float* pixel = counts->data() + p * 4;
-    if (pixel[3] > 0.5f) {
-      sum += pixel[0];
-      ++covered;
-    }
-  }
-  if (covered > 0)
-    Q_EMIT samplesMeasured(sum / double(covered));
+  if (count && count->pixels > 0)
+    Q_EMIT samplesMeasured(count->mean);
 }
 
 void ViewportWidget::startErrorView(int pixelWidth, int pixelHeight) {
