@@ -34,9 +34,15 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
   setMinimumSize(320, 240);
   m_samplesTimer->setSingleShot(true);
   m_samplesTimer->setInterval(kSamplesDelayMs);
+  // Measured in the widget's context outside paintGL: no frame is redrawn for it.
   connect(m_samplesTimer, &QTimer::timeout, this, [this] {
-    m_measureSamples = true;
-    update();
+    if (!m_renderer || !isValid())
+      return;
+    makeCurrent();
+    const qreal ratio = devicePixelRatioF();
+    measureSamples(std::max(int(std::lround(width() * ratio)) / 4, 1),
+                   std::max(int(std::lround(height() * ratio)) / 4, 1));
+    doneCurrent();
   });
   setFocusPolicy(Qt::StrongFocus);
   setToolTip(
@@ -306,13 +312,7 @@ void ViewportWidget::paintGL() {
   // draws on demand, so the stall never costs an animation frame.
   context()->functions()->glFinish();
   const double milliseconds = double(timer.nsecsElapsed()) / 1.0e6;
-  // After the timing, so the number is the frame's alone; every other frame restarts the wait.
-  if (m_measureSamples) {
-    m_measureSamples = false;
-    measureSamples(std::max(pixelWidth / 4, 1), std::max(pixelHeight / 4, 1));
-  } else {
-    m_samplesTimer->start();
-  }
+  m_samplesTimer->start();  // every frame restarts the wait for the view to rest
   paintOverlays();
   Q_EMIT frameRendered(milliseconds);
 }

@@ -154,7 +154,6 @@ class ViewportWidget : public QOpenGLWidget {
 
   // The samples-per-pixel measurement, after the view rests.
   QTimer* m_samplesTimer;
-  bool m_measureSamples = false;
 
   // The error view: a CPU trace per frame, in the background.
   BackgroundTask* m_errorTask;  // the error view's exact trace
