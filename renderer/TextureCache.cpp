@@ -217,7 +217,8 @@ QOpenGLTexture& TextureCache::heightPyramid(const core::Material& material) {
   std::shared_ptr<const Image> image = material.map(slot).image;
   const bool depth = material.parameterFlag(core::ParamId::HeightIsDepth);
   // An empty slot keys as null (kept while the slot stays empty) and reads the neutral texel.
-  PyramidEntry& entry = m_pyramids[PyramidKey{image.get(), packed, depth}];
+  const std::shared_ptr<const core::CompressedTexture>& compressed = material.map(slot).compressed;
+  PyramidEntry& entry = m_pyramids[PyramidKey{image.get(), compressed.get(), packed, depth}];
   if (!image)
     image = neutralImage(slot);
   if (entry.texture)
@@ -226,7 +227,7 @@ QOpenGLTexture& TextureCache::heightPyramid(const core::Material& material) {
   // The pyramid must bound what the shader fetches: a compression preview's decoded texels.
   const Image* source = image.get();
   core::Result<Image> decoded = core::makeError("");
-  if (const auto& compressed = material.map(slot).compressed) {
+  if (compressed) {
     decoded = core::decodeAsMap(*compressed, 0);
     if (decoded)
       source = &decoded.value();
@@ -267,9 +268,10 @@ void TextureCache::releaseUnused(std::initializer_list<const core::Material*> ma
   }
   for (auto it = m_pyramids.begin(); it != m_pyramids.end();) {
     bool used = false;
+    const MapSlot slot = it->first.packed ? MapSlot::Normal : MapSlot::Height;
     for (const core::Material* material : materials) {
-      used = used || (material->image(it->first.packed ? MapSlot::Normal : MapSlot::Height) ==
-                          it->first.image &&
+      used = used || (material->image(slot) == it->first.image &&
+                      material->map(slot).compressed.get() == it->first.compressed &&
                       material->parameterFlag(core::ParamId::HeightIsDepth) == it->first.depth);
     }
     it = used ? std::next(it) : m_pyramids.erase(it);

@@ -47,6 +47,7 @@ class TextureCache {
   std::map<Key, Entry> m_uploads;
   struct PyramidKey {
     const core::Image* image;
+    const core::CompressedTexture* compressed;  // a preview's texels are what is bounded
     bool packed;
     bool depth;
     auto operator<=>(const PyramidKey&) const = default;

@@ -17,8 +17,6 @@
 #include <QGuiApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
-#include <QOpenGLFramebufferObject>
-#include <QOpenGLFunctions>
 #include <QSurfaceFormat>
 
 #include <algorithm>
@@ -87,8 +85,6 @@ int main(int argc, char* argv[]) {
     return 1;
   }
   materialRenderer.setMesh(plane);
-  QOpenGLFramebufferObject fbo(width, height, QOpenGLFramebufferObject::Depth);
-  QOpenGLFunctions* gl = context.functions();
 
   const ViewSetup views[3] = {{"head-on", 89.0f}, {"45 deg", 45.0f}, {"grazing", 15.0f}};
   const auto timeFrame = [&](const core::Material& material, const ViewSetup& setup) {
@@ -100,17 +96,10 @@ int main(int argc, char* argv[]) {
     // A narrow field of view keeps each view pure: at "grazing" every pixel sees the surface
     // between 5 and 25 degrees, instead of a spread from the horizon to 35 degrees.
     frame.view.camera.fovYDeg = 20.0f;
-    std::vector<double> runs;
-    for (int i = 0; i <= repeats; ++i) {  // the first run compiles and uploads: not counted
-      const auto start = std::chrono::steady_clock::now();
-      (void)materialRenderer.render(frame, width, height, fbo.handle());
-      gl->glFinish();
-      const auto end = std::chrono::steady_clock::now();
-      if (i > 0)
-        runs.push_back(std::chrono::duration<double, std::milli>(end - start).count());
-    }
-    std::nth_element(runs.begin(), runs.begin() + std::ptrdiff_t(runs.size() / 2), runs.end());
-    return runs[runs.size() / 2];
+    // The same timing as relief-cli render --stats: an untimed first frame, then the median.
+    core::Result<double> milliseconds =
+        materialRenderer.medianFrameMilliseconds(frame, width, height, repeats);
+    return milliseconds ? milliseconds.value() : -1.0;
   };
 
   std::vector<Row> rows;
