@@ -24,6 +24,11 @@ function(relief_target_defaults target)
   endif()
   target_compile_definitions(${target} PRIVATE QT_NO_KEYWORDS
                                                GLM_FORCE_CXX17)
+  # Every sanitized executable carries the runtime's defaults (why: SanitizerDefaults.cpp).
+  get_target_property(type ${target} TYPE)
+  if((RELIEF_SANITIZE OR RELIEF_FUZZ) AND type STREQUAL "EXECUTABLE")
+    target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tools/sanitizers/SanitizerDefaults.cpp)
+  endif()
 endfunction()
 
 # relief_folder_sources(<variable> <folder> <Class>...): appends a folder's sources to <variable>,
