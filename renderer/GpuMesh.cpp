@@ -1,6 +1,8 @@
 // GpuMesh; see GpuMesh.h.
 #include "renderer/GpuMesh.h"
 
+#include <algorithm>
+
 #include <cstddef>
 
 namespace relief::renderer {
@@ -33,11 +35,15 @@ void GpuMesh::upload(QOpenGLExtraFunctions& gl, const core::Mesh& mesh) {
   attribute(kAttribTangent, 4, offsetof(core::Vertex, tangent));
 }
 
-void GpuMesh::draw(QOpenGLExtraFunctions& gl) {
+void GpuMesh::draw(QOpenGLExtraFunctions& gl, GLenum mode, int primitivesPerDraw) {
   if (m_indexCount == 0)
     return;
   QOpenGLVertexArrayObject::Binder binder(&m_vao);
-  gl.glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+  const int batch = std::max(3 * primitivesPerDraw, 3);
+  for (int first = 0; first < m_indexCount; first += batch) {
+    gl.glDrawElements(mode, std::min(batch, m_indexCount - first), GL_UNSIGNED_INT,
+                      reinterpret_cast<const void*>(std::size_t(first) * sizeof(GLuint)));
+  }
 }
 
 void GpuMesh::release() {

@@ -22,7 +22,9 @@ class GpuMesh {
  public:
   GpuMesh();
   void upload(QOpenGLExtraFunctions& gl, const core::Mesh& mesh);
-  void draw(QOpenGLExtraFunctions& gl);
+  // `mode`: GL_TRIANGLES, or GL_PATCHES of three vertices for the tessellation stages;
+  // `primitivesPerDraw` triangles or patches per draw call (one call for all by default).
+  void draw(QOpenGLExtraFunctions& gl, GLenum mode, int primitivesPerDraw = 1 << 29);
   void release();
   bool isEmpty() const { return m_indexCount == 0; }
 

@@ -81,6 +81,7 @@ void MaterialRenderer::releaseResources() {
 void MaterialRenderer::setMesh(const core::Mesh& mesh) {
   m_mesh.upload(*this, mesh);
   m_meshBounds = mesh.bounds();
+  m_meshWorldPerUv = float(core::worldUnitsPerUv(mesh));
 }
 
 void MaterialRenderer::setMaterial(const core::Material& material) {
@@ -108,8 +109,13 @@ ShaderProgram* MaterialRenderer::programFor(const core::Material& material,
       materialShaderDefines(material, frame.debugView, frame.output);
   std::unique_ptr<ShaderProgram>& program = m_materialPrograms[joined(defines)];
   if (!program) {
+    ShaderStagePaths paths{"material.vert", "material.frag", {}, {}};
+    if (usesTessellation(material, frame.output)) {
+      paths.tessellationControl = "material.tesc";
+      paths.tessellationEvaluation = "material.tese";
+    }
     auto built = std::make_unique<ShaderProgram>();
-    if (core::Status status = built->build("material.vert", "material.frag", defines); !status) {
+    if (core::Status status = built->build(paths, defines); !status) {
       m_materialPrograms.erase(joined(defines));
       error = status.error();
       return nullptr;
@@ -137,13 +143,12 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
 
-  const float aspect = float(width) / float(std::max(height, 1));
   std::string error;
   ShaderProgram* programA = programFor(m_material, frame, error);
   if (!programA)
     return core::makeError(error);
   if (!frame.split) {
-    drawMaterial(*programA, m_material, frame, aspect);
+    drawMaterial(*programA, m_material, frame, width, height);
   } else {
     // A left of the divider, B right of it, the same camera for both.
     const int divider =
@@ -153,9 +158,9 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
       return core::makeError(error);
     glEnable(GL_SCISSOR_TEST);
     glScissor(0, 0, divider, height);
-    drawMaterial(*programA, m_material, frame, aspect);
+    drawMaterial(*programA, m_material, frame, width, height);
     glScissor(divider, 0, width - divider, height);
-    drawMaterial(*programB, frame.split->material, frame, aspect);
+    drawMaterial(*programB, frame.split->material, frame, width, height);
     glDisable(GL_SCISSOR_TEST);
   }
   if (frame.split) {
@@ -167,10 +172,10 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
 }
 
 void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material& material,
-                                    const FrameSettings& frame, float aspect) {
+                                    const FrameSettings& frame, int width, int height) {
   QOpenGLShaderProgram& program = shader.program();
   program.bind();
-  setUniforms(program, material, frame, aspect);
+  setUniforms(program, material, frame, width, height);
   for (MapSlot slot : core::kAllMapSlots) {
     m_textures.texture(material, slot).bind(unsigned(kFirstMapUnit + int(slot)));
   }
@@ -191,7 +196,19 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   glClear(GL_DEPTH_BUFFER_BIT);
   // Both sides are drawn: an open mesh (the plane) must not vanish when orbiting below it.
   glDisable(GL_CULL_FACE);
-  m_mesh.draw(*this);
+  if (usesTessellation(material, frame.output)) {
+    // Mesa's llvmpipe (22.3, Debian 12) silently drops the rest of a tessellated draw that
+    // generates too many triangles: 512 patches at level 32 (about 520k triangles) lost the
+    // later patches, 512 at level 16 (130k) drew them all. Draws of at most kTrianglesPerDraw
+    // generated triangles (a patch at level n makes about n^2) stay well inside that on every
+    // driver, for one extra draw call per few patches.
+    constexpr int kTrianglesPerDraw = 1 << 16;
+    const int level = int(material.parameter(core::ParamId::MaxTessellation));
+    glPatchParameteri(GL_PATCH_VERTICES, 3);
+    m_mesh.draw(*this, GL_PATCHES, std::max(kTrianglesPerDraw / (level * level), 1));
+  } else {
+    m_mesh.draw(*this, GL_TRIANGLES);
+  }
   program.release();
   glDisable(GL_DEPTH_TEST);
 }
@@ -229,8 +246,9 @@ void MaterialRenderer::drawBackground(const RenderView& view) {
 }
 
 void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Material& material,
-                                   const FrameSettings& frame, float aspect) {
+                                   const FrameSettings& frame, int width, int height) {
   const RenderView& view = frame.view;
+  const float aspect = float(width) / float(std::max(height, 1));
   const glm::mat4 model(1.0f);
   const glm::mat4 viewProjection = view.camera.projectionMatrix(aspect) * view.camera.viewMatrix();
   program.setUniformValue("uModel", toQt(model));
@@ -240,6 +258,8 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
   program.setUniformValue("uLightDirection", toQt(view.light.direction()));
   program.setUniformValue("uLightColor", toQt(view.light.color * view.light.intensity));
   program.setUniformValue("uAmbient", view.light.ambient);
+  program.setUniformValue("uViewportSize", QVector2D(float(width), float(height)));
+  program.setUniformValue("uWorldPerUv", m_meshWorldPerUv);
   const float radius = m_meshBounds.sphereRadius;
   program.setUniformValue(
       "uDepthDisplayRange",

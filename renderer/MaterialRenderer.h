@@ -65,16 +65,18 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   ShaderProgram* programFor(const core::Material& material, const FrameSettings& frame,
                             std::string& error);
   void drawBackground(const RenderView& view);
+  // `width` x `height`: the viewport in pixels.
   void drawMaterial(ShaderProgram& program, const core::Material& material,
-                    const FrameSettings& frame, float aspect);
+                    const FrameSettings& frame, int width, int height);
   void setUniforms(QOpenGLShaderProgram& program, const core::Material& material,
-                   const FrameSettings& frame, float aspect);
+                   const FrameSettings& frame, int width, int height);
 
   bool m_initialized = false;
   std::map<std::string, std::unique_ptr<ShaderProgram>> m_materialPrograms;
   ShaderProgram m_backgroundProgram;
   GpuMesh m_mesh;
   core::Bounds m_meshBounds;
+  float m_meshWorldPerUv = 1.0f;  // core::worldUnitsPerUv, for the displacement technique
   TextureCache m_textures;
   core::Material m_material;
   unsigned m_emptyVao = 0;  // core profile needs a bound VAO even for attribute-less draws

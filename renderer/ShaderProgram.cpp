@@ -53,47 +53,61 @@ GLuint compileStage(QOpenGLExtraFunctions& gl, GLenum type, const std::string& s
 
 }  // namespace
 
-core::Status ShaderProgram::build(const std::string& vertexPath, const std::string& fragmentPath,
+core::Status ShaderProgram::build(const ShaderStagePaths& paths,
                                   const std::vector<std::string>& defines,
                                   const ShaderSourceLoader& loader) {
+  struct Stage {
+    GLenum type;
+    const std::string& path;
+  };
+  std::vector<Stage> stages = {{GL_VERTEX_SHADER, paths.vertex}};
+  if (!paths.tessellationControl.empty()) {
+    stages.push_back({GL_TESS_CONTROL_SHADER, paths.tessellationControl});
+    stages.push_back({GL_TESS_EVALUATION_SHADER, paths.tessellationEvaluation});
+  }
+  stages.push_back({GL_FRAGMENT_SHADER, paths.fragment});
+
   const std::string prelude = shaderPrelude(defines);
-  core::Result<ResolvedShader> vertex = resolveShaderIncludes(vertexPath, loader, prelude);
-  if (!vertex)
-    return core::makeError(vertex.error());
-  core::Result<ResolvedShader> fragment = resolveShaderIncludes(fragmentPath, loader, prelude);
-  if (!fragment)
-    return core::makeError(fragment.error());
+  std::vector<ResolvedShader> sources;
+  for (const Stage& stage : stages) {
+    core::Result<ResolvedShader> resolved = resolveShaderIncludes(stage.path, loader, prelude);
+    if (!resolved)
+      return core::makeError(resolved.error());
+    sources.push_back(std::move(resolved).value());
+  }
 
   QOpenGLContext* context = QOpenGLContext::currentContext();
   Q_ASSERT(context);
   QOpenGLExtraFunctions& gl = *context->extraFunctions();
-  std::string log;
-  const GLuint vertexShader = compileStage(gl, GL_VERTEX_SHADER, vertex->source, log);
-  if (!vertexShader) {
-    return core::makeError(vertexPath + " does not compile:\n" +
-                           mapShaderLog(log, vertex->lineOrigins));
-  }
-  const GLuint fragmentShader = compileStage(gl, GL_FRAGMENT_SHADER, fragment->source, log);
-  if (!fragmentShader) {
-    gl.glDeleteShader(vertexShader);
-    return core::makeError(fragmentPath + " does not compile:\n" +
-                           mapShaderLog(log, fragment->lineOrigins));
+  std::vector<GLuint> shaders;
+  const auto deleteShaders = [&] {
+    for (GLuint shader : shaders)
+      gl.glDeleteShader(shader);
+  };
+  std::string names;
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    std::string log;
+    const GLuint shader = compileStage(gl, stages[i].type, sources[i].source, log);
+    if (!shader) {
+      deleteShaders();
+      return core::makeError(stages[i].path + " does not compile:\n" +
+                             mapShaderLog(log, sources[i].lineOrigins));
+    }
+    shaders.push_back(shader);
+    names += (names.empty() ? "" : " + ") + stages[i].path;
   }
 
   auto program = std::make_unique<QOpenGLShaderProgram>();
   program->create();
-  gl.glAttachShader(program->programId(), vertexShader);
-  gl.glAttachShader(program->programId(), fragmentShader);
+  for (GLuint shader : shaders)
+    gl.glAttachShader(program->programId(), shader);
   const bool linked = program->link();
   // The linked program keeps what it needs; the stage objects can go.
-  gl.glDetachShader(program->programId(), vertexShader);
-  gl.glDetachShader(program->programId(), fragmentShader);
-  gl.glDeleteShader(vertexShader);
-  gl.glDeleteShader(fragmentShader);
-  if (!linked) {
-    return core::makeError(vertexPath + " + " + fragmentPath + " do not link:\n" +
-                           program->log().toStdString());
-  }
+  for (GLuint shader : shaders)
+    gl.glDetachShader(program->programId(), shader);
+  deleteShaders();
+  if (!linked)
+    return core::makeError(names + " do not link:\n" + program->log().toStdString());
   m_program = std::move(program);
   return {};
 }

@@ -20,6 +20,8 @@ const char* techniqueDefine(core::Technique technique) {
       return "TECHNIQUE_RELIEF";
     case core::Technique::Quadtree:
       return "TECHNIQUE_QUADTREE";
+    case core::Technique::Displacement:
+      return "TECHNIQUE_DISPLACEMENT";
   }
   return "TECHNIQUE_NORMAL";
 }
@@ -45,14 +47,21 @@ std::vector<std::string> materialShaderDefines(const core::Material& material, c
     defines.emplace_back("DEBUG_VIEW VIEW_RAY");  // no depth offset: nothing is shaded
     return defines;
   }
-  if (material.parameterFlag(ParamId::DepthOffset))
+  // Displaced geometry has its depth already.
+  if (material.parameterFlag(ParamId::DepthOffset) &&
+      material.technique() != core::Technique::Displacement) {
     defines.emplace_back("DEPTH_OFFSET");
+  }
   // The error view is computed on the CPU from a float UV pass.
   const core::DebugView shaderView = view == core::DebugView::Error ? core::DebugView::Uv : view;
   defines.push_back("DEBUG_VIEW " + std::to_string(int(shaderView)));
   if (output == FrameOutput::FloatData)
     defines.emplace_back("FLOAT_OUTPUT");
   return defines;
+}
+
+bool usesTessellation(const core::Material& material, FrameOutput output) {
+  return material.technique() == core::Technique::Displacement && output != FrameOutput::EyeRays;
 }
 
 }  // namespace relief::renderer

@@ -16,4 +16,9 @@ namespace relief::renderer {
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
                                                FrameOutput output);
 
+// Whether the program has the tessellation stages (material.tesc/tese) and draws patches: the
+// displacement technique, except for the eye-ray output, which wants the rays' entry points on
+// the undisplaced mesh (the exact tracer starts there).
+bool usesTessellation(const core::Material& material, FrameOutput output);
+
 }  // namespace relief::renderer

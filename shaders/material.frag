@@ -1,7 +1,8 @@
 // Material fragment stage. Builds the tangent frame, moves view and light into tangent space
 // (reference 004: Vt = (T.V, B.V, N.V)), finds the visible point with the compiled parallax
 // technique, shadows it from the height field and shades it with Blinn-Phong, or writes one of
-// the debug views.
+// the debug views. With the displacement technique the tessellation stages (material.tesc,
+// material.tese) have already moved the geometry, and the fragment is the visible point.
 
 #include "include/material_inputs.glsl"
 #include "include/debug_views.glsl"
@@ -35,7 +36,15 @@ vec4 dataOutput(vec3 raw, vec3 display) {
 }
 
 void main() {
-  TangentFrame frame = buildTangentFrame(vIn.worldNormal, vIn.worldTangent, gl_FrontFacing);
+#ifdef TECHNIQUE_DISPLACEMENT
+  // A displaced surface can show the back of a fold (a wall turned away from the eye) where
+  // the mesh itself faces the eye: the mesh's side decides how the frame faces, not the
+  // displaced triangle's.
+  bool facesEye = dot(vIn.worldNormal, uCameraPosition - vIn.worldPosition) >= 0.0;
+#else
+  bool facesEye = gl_FrontFacing;
+#endif
+  TangentFrame frame = buildTangentFrame(vIn.worldNormal, vIn.worldTangent, facesEye);
   vec3 V = normalize(toTangentSpace(frame, normalize(uCameraPosition - vIn.worldPosition)));
   vec3 L = toTangentSpace(frame, uLightDirection);
   vec2 entryUv = vIn.uv * uTiling;
@@ -72,9 +81,13 @@ void main() {
   int samples = visible.samples;
   float shadow = selfShadow(visible.uv, visible.height, L, dx, dy, scale, samples);
 
+#ifdef TECHNIQUE_DISPLACEMENT
+  vec3 displaced = vIn.worldPosition;  // the tessellation stage moved the geometry there
+#else
   float surfaceHeight = visible.height * scale + bias;  // UV units above the mesh surface
   vec3 displaced = displacedWorldPosition(uvFrame, vIn.worldPosition, visible.uv - entryUv,
                                           surfaceHeight, frame.normal);
+#endif
 #ifdef DEPTH_OFFSET
   vec4 clip = uViewProjection * vec4(displaced, 1.0);
   gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);

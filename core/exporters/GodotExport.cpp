@@ -113,7 +113,7 @@ Result<EngineExportResult> exportGodot(const Preset& preset, const std::string& 
   if (parallax) {
     const double scale = material.parameter(ParamId::HeightScale);
     const double bias = material.parameter(ParamId::HeightBias);
-    const bool deep = isMarchingTechnique(material.technique());
+    const bool deep = isOccludingRelief(material.technique());
     tres << "heightmap_enabled = true\n";
     // Godot offsets texture coordinates by view.xy * heightmap_scale * 0.01 at full depth.
     tres << "heightmap_scale = " << number(scale * 100.0) << "\n";

@@ -289,10 +289,10 @@ Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& 
             " texture widths " + (bias + scale / 2 < 0 ? "lower" : "higher") +
             ", which URP cannot express");
       }
-      if (isMarchingTechnique(material.technique())) {
+      if (isOccludingRelief(material.technique())) {
         result.notes.push_back(
             "URP Lit has only single-step parallax (offset limiting with view.z + 0.42); "
-            "Relief's marching technique needs HDRP's pixel displacement or a Shader Graph POM");
+            "Relief's occluding relief needs HDRP's pixel displacement or a Shader Graph POM");
       }
     }
   } else {
@@ -307,7 +307,7 @@ Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& 
     if (parallax) {
       constexpr double kPrimitiveMetres = 1.0;
       const double amplitudeCm = hdrpPomAmplitudeCentimetres(scale, kPrimitiveMetres);
-      const bool deep = isMarchingTechnique(material.technique());
+      const bool deep = isOccludingRelief(material.technique());
       const auto samples = [&](ParamId id) {
         return double(std::clamp(int(material.parameter(id)), 1, kHdrpMaxSamples));
       };

@@ -98,7 +98,7 @@ Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string&
       return makeError(s.error());
     const double scale = material.parameter(ParamId::HeightScale);
     const double bias = material.parameter(ParamId::HeightBias);
-    const bool deep = isMarchingTechnique(material.technique());
+    const bool deep = isOccludingRelief(material.technique());
     // Epic's function marches view.xy / view.z scaled by Height Ratio (the depth as a fraction of
     // the texture's width) in the UVs it is given: Relief's heightScale in tiled texture widths.
     QJsonObject parallax{

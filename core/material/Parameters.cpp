@@ -68,6 +68,11 @@ std::vector<ParameterSpec> buildTable() {
         "Fades the relief out to plain normal mapping where the height map is sampled at this "
         "mip level (far away or at grazing angles), over the level before it. Saves the "
         "marching cost where it cannot be seen. 0 never fades.")),
+    parameter(ParamId::MaxTessellation, kSampling, {ParamUse::Tessellation, "uMaxTessellation"}, integerOption(
+        "maxTessellation", "Max tessellation", "segments per triangle edge", 1, 64, 32,
+        "Displacement only: the most segments each triangle edge is split into. Edges are "
+        "split into segments about 4 pixels long on screen and no shorter than a texel of the "
+        "height map, up to this many.")),
     parameter(ParamId::ShadowMode, kShadows, {ParamUse::Always, ""}, choiceOption(
         "shadowMode", "Shadows", {"off", "hard", "soft"}, 2,
         "Self-shadowing by marching from the visible point toward the light (reference 003, "
@@ -152,6 +157,8 @@ bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode s
       return shadows != ShadowMode::Off;
     case ParamUse::SoftShadows:
       return shadows == ShadowMode::Soft;
+    case ParamUse::Tessellation:
+      return technique == Technique::Displacement;
   }
   return true;
 }

@@ -27,6 +27,7 @@ enum class ParamId {
   MaxSamples,
   RefinementSteps,
   LodFade,
+  MaxTessellation,
   // Self-shadowing
   ShadowMode,
   ShadowStrength,
@@ -54,10 +55,11 @@ constexpr std::size_t kParamCount = std::size_t(ParamId::Count);
 // When a parameter has an effect; the Parameters panel greys out the others.
 enum class ParamUse {
   Always,
-  Marching,     // the layered marches (steep, POM, relief): their sample counts
-  Refinement,   // relief mapping's binary refinement
-  Shadows,      // self-shadowing on, hard or soft
-  SoftShadows,  // soft self-shadowing
+  Marching,      // the layered marches (steep, POM, relief): their sample counts
+  Refinement,    // relief mapping's binary refinement
+  Shadows,       // self-shadowing on, hard or soft
+  SoftShadows,   // soft self-shadowing
+  Tessellation,  // the displacement technique's tessellation
 };
 
 // A material parameter: its OptionSpec (name = preset key and the CLI's --set name) plus its

@@ -21,11 +21,12 @@ constexpr std::array kTechniques = {
     TechniqueInfo{Technique::Pom, "pom", "Parallax occlusion mapping"},
     TechniqueInfo{Technique::Relief, "relief", "Relief mapping (binary refinement)"},
     TechniqueInfo{Technique::Quadtree, "quadtree", "Quadtree (maximum mipmap, exact)"},
+    TechniqueInfo{Technique::Displacement, "displacement", "Displacement (tessellated geometry)"},
 };
 
 constexpr std::array kTechniqueList = {
     Technique::Normal, Technique::Parallax, Technique::ParallaxLimited, Technique::Steep,
-    Technique::Pom,    Technique::Relief,   Technique::Quadtree};
+    Technique::Pom,    Technique::Relief,   Technique::Quadtree,        Technique::Displacement};
 
 }  // namespace
 
@@ -44,6 +45,10 @@ std::string_view techniqueLabel(Technique technique) {
 bool isMarchingTechnique(Technique technique) {
   return technique == Technique::Steep || technique == Technique::Pom ||
          technique == Technique::Relief || technique == Technique::Quadtree;
+}
+
+bool isOccludingRelief(Technique technique) {
+  return isMarchingTechnique(technique) || technique == Technique::Displacement;
 }
 
 std::optional<Technique> findTechnique(std::string_view name) {

@@ -16,11 +16,16 @@ enum class Technique {
   Pom,              // parallax occlusion mapping as reference 001 gives it
   Relief,           // linear search, then binary refinement
   Quadtree,         // exact: maximum-mipmap traversal to the bilinear cell (Tevs et al. 2008)
+  Displacement,     // tessellated geometry moved by the height: the geometric reference
 };
 
 // Whether the technique marches along the view ray (and so can self-shadow and has a cost
 // that depends on the sample counts).
 bool isMarchingTechnique(Technique technique);
+
+// Whether the relief occludes itself (a marching technique, or displaced geometry): exports
+// ask the engine for its occlusion parallax then, not for the plain offset.
+bool isOccludingRelief(Technique technique);
 
 std::span<const Technique> allTechniques();
 std::string_view techniqueName(Technique technique);

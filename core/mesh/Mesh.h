@@ -35,4 +35,10 @@ struct Mesh {
   Bounds bounds() const;
 };
 
+// World length of one UV unit over the whole mesh: the square root of its world area over its
+// UV area, 0 when either is 0. The displacement technique moves vertices by heights measured in
+// UV units with this one factor (not a per-triangle one), so the triangles either side of an
+// edge move its vertices alike and the displaced surface has no cracks.
+double worldUnitsPerUv(const Mesh& mesh);
+
 }  // namespace relief::core::inline mesh

@@ -76,7 +76,7 @@ Mesh makePlane(float size, int segments) {
   return mesh;
 }
 
-Mesh makeCube(float size) {
+Mesh makeCube(float size, int segments) {
   Mesh mesh;
   mesh.name = "cube";
   const float h = 0.5f * size;
@@ -94,7 +94,7 @@ Mesh makeCube(float size) {
   }};
   for (const Face& face : faces) {
     const glm::vec3 origin = h * (face.normal - face.uAxis - face.vAxis);
-    appendGrid(mesh, origin, size * face.uAxis, size * face.vAxis, 1);
+    appendGrid(mesh, origin, size * face.uAxis, size * face.vAxis, std::max(segments, 1));
   }
   computeTangentFrames(mesh);
   return mesh;
@@ -218,9 +218,9 @@ Mesh makeTorus(float ringRadius, float tubeRadius, int ringSegments, int tubeSeg
 Mesh makePrimitive(PrimitiveShape shape) {
   switch (shape) {
     case PrimitiveShape::Plane:
-      return makePlane();
+      return makePlane(2.0f, kPrimitiveFaceSegments);
     case PrimitiveShape::Cube:
-      return makeCube();
+      return makeCube(1.6f, kPrimitiveFaceSegments);
     case PrimitiveShape::Sphere:
       return makeSphere();
     case PrimitiveShape::Cylinder:

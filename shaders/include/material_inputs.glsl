@@ -17,6 +17,7 @@ uniform int uMinSamples;        // view-ray samples looking straight on (referen
 uniform int uMaxSamples;        // view-ray samples at grazing angles
 uniform int uRefinementSteps;   // relief mapping's binary search steps
 uniform float uLodFade;         // mip level where the relief has faded out; 0 = never
+uniform int uMaxTessellation;   // displacement: most segments per triangle edge
 
 uniform float uShadowStrength;  // 0..1
 uniform int uShadowSamples;     // samples toward the light

@@ -120,7 +120,7 @@ ParallaxResult findVisiblePoint(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, 
   return parallaxOffset(uv, V, dx, dy, scale, bias, true);
 #elif defined(TECHNIQUE_STEEP) || defined(TECHNIQUE_POM) || defined(TECHNIQUE_RELIEF)
   return marchHeightField(uv, V, dx, dy, scale, bias);
-#else  // TECHNIQUE_NORMAL
+#else  // TECHNIQUE_NORMAL, TECHNIQUE_DISPLACEMENT (its geometry is displaced: material.tese)
   ParallaxResult result;
   result.uv = uv;
   result.height = sampleHeight(uv, dx, dy);

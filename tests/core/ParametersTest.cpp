@@ -76,6 +76,9 @@ TEST(Parameters, UseFollowsTechniqueAndShadowMode) {
   EXPECT_FALSE(inUse(ParamId::ShadowSoftness, Technique::Pom, ShadowMode::Hard));
   EXPECT_TRUE(inUse(ParamId::ShadowSoftness, Technique::Relief, ShadowMode::Soft));
   EXPECT_TRUE(inUse(ParamId::HeightScale, Technique::Normal, ShadowMode::Off));
+  EXPECT_TRUE(inUse(ParamId::MaxTessellation, Technique::Displacement, ShadowMode::Off));
+  EXPECT_FALSE(inUse(ParamId::MaxTessellation, Technique::Pom, ShadowMode::Off));
+  EXPECT_FALSE(inUse(ParamId::MaxSamples, Technique::Displacement, ShadowMode::Off));
 }
 
 TEST(Parameters, ParsesNumbersAndBooleansAndRejectsNonsense) {

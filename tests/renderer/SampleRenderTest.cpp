@@ -51,7 +51,8 @@ TEST_F(SampleRender, EveryTechniqueMatchesItsBaseline) {
   // Close and low over the cobblestones, where the techniques differ most.
   core::Result<core::LoadedPreset> preset = core::loadPreset(samplePreset("cobblestones"));
   ASSERT_TRUE(preset.ok()) << preset.error();
-  offscreen().setMesh(core::makePlane());
+  // The editor's plane, whose grid displacement can tessellate to the texels.
+  offscreen().setMesh(core::makePrimitive(core::PrimitiveShape::Plane));
   renderer::RenderView view;
   view.camera.yawDeg = 10.0f;
   view.camera.pitchDeg = 22.0f;

@@ -36,10 +36,9 @@ std::string runValidator(const std::string& file, int& exitCode) {
 }
 
 TEST(ShaderValidation, EveryStageCompilesWithGlslang) {
-  const Stage stages[] = {{"material.vert", ".vert"},
-                          {"material.frag", ".frag"},
-                          {"background.vert", ".vert"},
-                          {"background.frag", ".frag"}};
+  const Stage stages[] = {{"material.vert", ".vert"},   {"material.tesc", ".tesc"},
+                          {"material.tese", ".tese"},   {"material.frag", ".frag"},
+                          {"background.vert", ".vert"}, {"background.frag", ".frag"}};
   for (const Stage& stage : stages) {
     core::Result<ResolvedShader> resolved =
         resolveShaderIncludes(stage.path, loadShaderSource, shaderPrelude({}));

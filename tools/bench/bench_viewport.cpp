@@ -120,8 +120,9 @@ int main(int argc, char* argv[]) {
   for (core::Technique technique : core::allTechniques()) {
     if (technique == core::Technique::Normal)
       continue;
-    // Parallax takes two samples whatever the count, and the quadtree walks as far as the ray
-    // needs: one row each. POM also runs at 64/256, the count issue 13 races the quadtree with.
+    // Parallax takes two samples whatever the count, the quadtree walks as far as the ray
+    // needs and displacement tessellates (at its default cap): one row each. POM also runs at
+    // 64/256, the count issue 13 races the quadtree with.
     const bool marching =
         core::isMarchingTechnique(technique) && technique != core::Technique::Quadtree;
     for (int most : {8, 16, 32, 64, 256}) {
@@ -133,8 +134,10 @@ int main(int argc, char* argv[]) {
       material.setTechnique(technique);
       material.setParameter(core::ParamId::MinSamples, most / 4);
       material.setParameter(core::ParamId::MaxSamples, most);
-      measure(material, marching ? std::to_string(most / 4) + "/" + std::to_string(most) : "-",
-              "off");
+      std::string setting = marching ? std::to_string(most / 4) + "/" + std::to_string(most) : "-";
+      if (technique == core::Technique::Displacement)
+        setting = "tess " + std::to_string(int(material.parameter(core::ParamId::MaxTessellation)));
+      measure(material, setting, "off");
     }
   }
   core::Material shadowed = base;

@@ -28,7 +28,7 @@ namespace relief::ui::inline viewport {
 ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
     : QOpenGLWidget(parent),
       m_document(document),
-      m_mesh(core::makePlane()),
+      m_mesh(core::makePrimitive(core::PrimitiveShape::Plane)),
       m_samplesTimer(new QTimer(this)),
       m_errorTask(new BackgroundTask(this)) {
   setMinimumSize(320, 240);
