@@ -197,12 +197,14 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   // Both sides are drawn: an open mesh (the plane) must not vanish when orbiting below it.
   glDisable(GL_CULL_FACE);
   if (usesTessellation(material, frame.output)) {
-    // Mesa's llvmpipe (22.3, Debian 12) silently drops the rest of a tessellated draw that
-    // generates too many triangles: 512 patches at level 32 (about 520k triangles) lost the
-    // later patches, 512 at level 16 (130k) drew them all. Draws of at most kTrianglesPerDraw
-    // generated triangles (a patch at level n makes about n^2) stay well inside that on every
-    // driver, for one extra draw call per few patches.
-    constexpr int kTrianglesPerDraw = 1 << 16;
+    // Tessellated draws are issued a few patches at a time. Mesa's llvmpipe (22.3, Debian 12)
+    // silently drops the rest of a draw that generates too many triangles (512 patches at
+    // level 32, about 520k triangles, lost the later patches; at level 16 all were drawn), and
+    // it tessellates big draws slowly: the plane at 16 segments per edge took 216 ms a frame
+    // in draws of up to 65536 generated triangles, 93 ms at 16384, 60 at 4096, 64 at 1024.
+    // A patch at level n makes about n^2 triangles; at most kTrianglesPerDraw per call costs a
+    // GPU one draw call per few patches.
+    constexpr int kTrianglesPerDraw = 1 << 12;
     const int level = int(material.parameter(core::ParamId::MaxTessellation));
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     m_mesh.draw(*this, GL_PATCHES, std::max(kTrianglesPerDraw / (level * level), 1));

@@ -1,7 +1,10 @@
 // Displacement technique, tessellation control: how finely each triangle is split before
 // material.tese moves its vertices by the height. Each edge is split into segments about
-// kTargetEdgePixels long on screen, never shorter than one texel of the height map (finer
-// geometry could not show more of it) and at most uMaxTessellation of them. An edge's count
+// kTargetEdgePixels long on screen, never shorter than 1/kSegmentsPerTexel of a texel of the
+// height map, and at most uMaxTessellation of them. Vertices one texel apart would sample the
+// bilinear surface only where four texels meet and cut the texels' curvature flat (measured:
+// 0.14 texel mean UV error against the exact tracer on the cobblestones height at 64x64); a
+// quarter texel apart they follow it. An edge's count
 // depends on its two vertices only, so the triangles either side of it agree and no cracks open.
 
 #include "include/material_inputs.glsl"
@@ -23,8 +26,10 @@ out VertexData {
 } vOut[];
 
 uniform vec2 uViewportSize;  // pixels
+uniform float uWorldPerUv;   // world units per unit of mesh UV (material.tese)
 
 const float kTargetEdgePixels = 4.0;
+const float kSegmentsPerTexel = 4.0;
 
 float edgeSegments(int a, int b) {
   vec4 clipA = gl_in[a].gl_Position;
@@ -34,8 +39,31 @@ float edgeSegments(int a, int b) {
   if (clipA.w > 1e-6 && clipB.w > 1e-6)
     pixels = length((clipA.xy / clipA.w - clipB.xy / clipB.w) * 0.5 * uViewportSize);
   vec2 texels = abs(vIn[a].uv - vIn[b].uv) * uTiling * uHeightMapSize;
-  float finest = max(texels.x, texels.y);
+  float finest = kSegmentsPerTexel * max(texels.x, texels.y);
   return clamp(min(pixels / kTargetEdgePixels, finest), 1.0, float(uMaxTessellation));
+}
+
+// Whether the patch, displaced anywhere between the lowest and the highest surface, lies wholly
+// beyond one plane of the view frustum. Such patches are dropped: off screen they would still
+// be split by their (large) projected length. The displaced patch lies within the hull of its
+// corners moved to both extremes along their normals.
+bool outsideView() {
+  float toWorld = uWorldPerUv / uTiling;
+  float lowest = min(uHeightBias, uHeightScale + uHeightBias) * toWorld;
+  float highest = max(uHeightBias, uHeightScale + uHeightBias) * toWorld;
+  bvec4 allBeyondSides = bvec4(true);
+  bvec2 allBeyondDepth = bvec2(true);
+  for (int i = 0; i < 3; ++i) {
+    vec3 normal = normalize(vIn[i].worldNormal);
+    for (int j = 0; j < 2; ++j) {
+      vec3 world = vIn[i].worldPosition + normal * (j == 0 ? lowest : highest);
+      vec4 clip = uViewProjection * vec4(world, 1.0);
+      allBeyondSides = bvec4(allBeyondSides.x && clip.x < -clip.w, allBeyondSides.y && clip.x > clip.w,
+                             allBeyondSides.z && clip.y < -clip.w, allBeyondSides.w && clip.y > clip.w);
+      allBeyondDepth = bvec2(allBeyondDepth.x && clip.z < -clip.w, allBeyondDepth.y && clip.z > clip.w);
+    }
+  }
+  return any(allBeyondSides) || any(allBeyondDepth);
 }
 
 void main() {
@@ -44,7 +72,13 @@ void main() {
   vOut[gl_InvocationID].worldNormal = vIn[gl_InvocationID].worldNormal;
   vOut[gl_InvocationID].worldTangent = vIn[gl_InvocationID].worldTangent;
   gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
-  if (gl_InvocationID == 0) {
+  if (gl_InvocationID == 0 && outsideView()) {
+    // An outer level of 0 drops the patch.
+    gl_TessLevelOuter[0] = 0.0;
+    gl_TessLevelOuter[1] = 0.0;
+    gl_TessLevelOuter[2] = 0.0;
+    gl_TessLevelInner[0] = 0.0;
+  } else if (gl_InvocationID == 0) {
     // Outer level i belongs to the edge opposite vertex i.
     gl_TessLevelOuter[0] = edgeSegments(1, 2);
     gl_TessLevelOuter[1] = edgeSegments(2, 0);

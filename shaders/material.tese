@@ -87,7 +87,7 @@ void main() {
     uv = point.uv;
   }
   // Level 0: the vertices are point samples of the bilinear surface the exact tracer meets.
-  // The control stage never splits finer than a texel; where a segment spans several texels
+  // The control stage never splits finer than a quarter texel; where a segment spans texels
   // (far away, or at the tessellation cap) the geometry is coarser than the map, as any
   // tessellated displacement is.
   float h = heightFromTexel(textureLod(HEIGHT_SOURCE_MAP, mapCoordinates(uv * uTiling), 0.0));

@@ -71,8 +71,8 @@ std::vector<ParameterSpec> buildTable() {
     parameter(ParamId::MaxTessellation, kSampling, {ParamUse::Tessellation, "uMaxTessellation"}, integerOption(
         "maxTessellation", "Max tessellation", "segments per triangle edge", 1, 64, 32,
         "Displacement only: the most segments each triangle edge is split into. Edges are "
-        "split into segments about 4 pixels long on screen and no shorter than a texel of the "
-        "height map, up to this many.")),
+        "split into segments about 4 pixels long on screen and no shorter than a quarter "
+        "texel of the height map, up to this many.")),
     parameter(ParamId::ShadowMode, kShadows, {ParamUse::Always, ""}, choiceOption(
         "shadowMode", "Shadows", {"off", "hard", "soft"}, 2,
         "Self-shadowing by marching from the visible point toward the light (reference 003, "

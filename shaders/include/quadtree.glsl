@@ -70,6 +70,8 @@ ParallaxResult traceQuadtree(vec2 uv, vec3 V, float scale, float bias, float mip
   vec2 start = vec2(topUv.x - repeat.x, 1.0 - (topUv.y - repeat.y)) * texels - 0.5;
   vec2 dir = vec2(-uvPerHeight.x, uvPerHeight.y) * texels;
   bvec2 still = lessThan(abs(dir), vec2(1e-9));  // never crosses a cell edge on this axis
+  vec2 inverseDir = vec2(still.x ? 0.0 : 1.0 / dir.x, still.y ? 0.0 : 1.0 / dir.y);
+  ivec2 stepDir = ivec2(dir.x >= 0.0 ? 1 : -1, dir.y >= 0.0 ? 1 : -1);
   // Past a block's edge by this much in t (1e-4 texel), so the next lookup lands beyond it.
   float nudge = 1e-4 / max(max(abs(dir.x), abs(dir.y)), 1e-4);
 
@@ -94,16 +96,24 @@ ParallaxResult traceQuadtree(vec2 uv, vec3 V, float scale, float bias, float mip
                                         cell.y == levelSize.y - 1 ? size.y : (cell.y + 1) << level);
     vec2 edge = vec2(dir.x >= 0.0 ? float(end.x) : float(first.x),
                      dir.y >= 0.0 ? float(end.y) : float(first.y));
-    vec2 tEdge = vec2(still.x ? 2.0 : (edge.x - start.x) / dir.x,
-                      still.y ? 2.0 : (edge.y - start.y) / dir.y);
+    vec2 tEdge = vec2(still.x ? 2.0 : (edge.x - start.x) * inverseDir.x,
+                      still.y ? 2.0 : (edge.y - start.y) * inverseDir.y);
     // Never behind the ray's current point, whatever the rounding at the edge it just crossed.
     float tExit = clamp(min(tEdge.x, tEdge.y), t, 1.0);
     float tBound = 1.0 - bound;  // the ray's height falls to the block's maximum here
     if (tBound >= tExit) {  // over the whole block: skip it, and climb if it left the parent
       t = tExit + nudge;
-      ivec2 next = wrapTexel(ivec2(floor(start + dir * t)), size);
-      ivec2 parentNow = cell >> 1, parentNext = min(next >> level, levelSize - 1) >> 1;
-      if (parentNow != parentNext) level = min(level + 1, top);
+      // The block it enters is the neighbour across the edge it left by (wrapping): another
+      // parent unless the two share one. Only the walk's speed depends on this choice; every
+      // block is looked up afresh from t.
+      bool acrossX = tEdge.x <= tEdge.y;
+      int index = acrossX ? cell.x : cell.y;
+      int count = acrossX ? levelSize.x : levelSize.y;
+      int neighbour = index + (acrossX ? stepDir.x : stepDir.y);
+      neighbour = neighbour < 0 ? count - 1 : (neighbour >= count ? 0 : neighbour);
+      int parents = max(count >> 1, 1);
+      if (min(index >> 1, parents - 1) != min(neighbour >> 1, parents - 1))
+        level = min(level + 1, top);
       continue;
     }
     t = max(t, tBound);

@@ -74,7 +74,8 @@ int main(int argc, char* argv[]) {
   }
   // A plane ten times the default, tiled ten times as often: the same texel density, and it
   // fills the frame even at grazing angles, so every view shades the same number of pixels.
-  const core::Mesh plane = core::makePlane(20.0f);
+  // Its grid is the editor plane's too (what displacement tessellates).
+  const core::Mesh plane = core::makePlane(20.0f, 10 * core::kPrimitiveFaceSegments);
   core::Material base = preset->preset.material;
   base.setParameter(core::ParamId::Tiling, base.parameter(core::ParamId::Tiling) * 10.0);
   base.setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Off));
