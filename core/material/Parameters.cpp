@@ -63,7 +63,7 @@ std::vector<ParameterSpec> buildTable() {
         "refinementSteps", "Refinement steps", "binary search steps", 0, 16, 5,
         "Relief mapping only: binary search steps after the linear search; each halves the "
         "remaining error.")),
-    parameter(ParamId::LodFade, kSampling, {ParamUse::Always, "uLodFade"}, numberOption(
+    parameter(ParamId::LodFade, kSampling, {ParamUse::PerPixel, "uLodFade"}, numberOption(
         "lodFade", "Fade at mip level", "mip levels", 0.0, 12.0, 0.0, 1,
         "Fades the relief out to plain normal mapping where the height map is sampled at this "
         "mip level (far away or at grazing angles), over the level before it. Saves the "
@@ -102,7 +102,7 @@ std::vector<ParameterSpec> buildTable() {
         "repeat: the relief continues across the mesh's UV border. clamp: texels displaced "
         "outside the UV range are discarded, so a plane shows the relief's silhouette at its "
         "edges.")),
-    parameter(ParamId::DepthOffset, kMapping, {ParamUse::Always, ""}, flagOption(
+    parameter(ParamId::DepthOffset, kMapping, {ParamUse::PerPixel, ""}, flagOption(
         "depthOffset", "Write displaced depth", false,
         "Write the depth of the displaced surface (gl_FragDepth), so it meets other geometry "
         "where the relief really is. Disables early depth testing.")),
@@ -159,6 +159,8 @@ bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode s
       return shadows == ShadowMode::Soft;
     case ParamUse::Tessellation:
       return technique == Technique::Displacement;
+    case ParamUse::PerPixel:
+      return technique != Technique::Displacement;
   }
   return true;
 }

@@ -60,6 +60,7 @@ enum class ParamUse {
   Shadows,       // self-shadowing on, hard or soft
   SoftShadows,   // soft self-shadowing
   Tessellation,  // the displacement technique's tessellation
+  PerPixel,      // what only the per-pixel techniques use (displacement moves real geometry)
 };
 
 // A material parameter: its OptionSpec (name = preset key and the CLI's --set name) plus its

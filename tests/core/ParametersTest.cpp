@@ -79,6 +79,9 @@ TEST(Parameters, UseFollowsTechniqueAndShadowMode) {
   EXPECT_TRUE(inUse(ParamId::MaxTessellation, Technique::Displacement, ShadowMode::Off));
   EXPECT_FALSE(inUse(ParamId::MaxTessellation, Technique::Pom, ShadowMode::Off));
   EXPECT_FALSE(inUse(ParamId::MaxSamples, Technique::Displacement, ShadowMode::Off));
+  EXPECT_FALSE(inUse(ParamId::DepthOffset, Technique::Displacement, ShadowMode::Off));
+  EXPECT_FALSE(inUse(ParamId::LodFade, Technique::Displacement, ShadowMode::Off));
+  EXPECT_TRUE(inUse(ParamId::DepthOffset, Technique::Normal, ShadowMode::Off));
 }
 
 TEST(Parameters, ParsesNumbersAndBooleansAndRejectsNonsense) {
