@@ -4,8 +4,8 @@
 // height map, and at most uMaxTessellation of them. Vertices one texel apart would sample the
 // bilinear surface only where four texels meet and cut the texels' curvature flat (measured:
 // 0.14 texel mean UV error against the exact tracer on the cobblestones height at 64x64); a
-// quarter texel apart they follow it. An edge's count
-// depends on its two vertices only, so the triangles either side of it agree and no cracks open.
+// quarter texel apart they follow it. An edge's count depends on its two vertices only, so the
+// triangles either side of it agree and no cracks open.
 
 #include "include/material_inputs.glsl"
 
@@ -51,19 +51,19 @@ bool outsideView() {
   float toWorld = uWorldPerUv / uTiling;
   float lowest = min(uHeightBias, uHeightScale + uHeightBias) * toWorld;
   float highest = max(uHeightBias, uHeightScale + uHeightBias) * toWorld;
-  bvec4 allBeyondSides = bvec4(true);
-  bvec2 allBeyondDepth = bvec2(true);
+  // Per plane of the frustum, how many of the six points lie beyond it.
+  ivec3 beyondLow = ivec3(0);   // x < -w (left), y < -w (bottom), z < -w (near)
+  ivec3 beyondHigh = ivec3(0);  // x > w (right), y > w (top), z > w (far)
   for (int i = 0; i < 3; ++i) {
     vec3 normal = normalize(vIn[i].worldNormal);
     for (int j = 0; j < 2; ++j) {
       vec3 world = vIn[i].worldPosition + normal * (j == 0 ? lowest : highest);
       vec4 clip = uViewProjection * vec4(world, 1.0);
-      allBeyondSides = bvec4(allBeyondSides.x && clip.x < -clip.w, allBeyondSides.y && clip.x > clip.w,
-                             allBeyondSides.z && clip.y < -clip.w, allBeyondSides.w && clip.y > clip.w);
-      allBeyondDepth = bvec2(allBeyondDepth.x && clip.z < -clip.w, allBeyondDepth.y && clip.z > clip.w);
+      beyondLow += ivec3(lessThan(clip.xyz, vec3(-clip.w)));
+      beyondHigh += ivec3(greaterThan(clip.xyz, vec3(clip.w)));
     }
   }
-  return any(allBeyondSides) || any(allBeyondDepth);
+  return any(equal(beyondLow, ivec3(6))) || any(equal(beyondHigh, ivec3(6)));
 }
 
 void main() {

@@ -38,9 +38,10 @@ vec4 blend(vec4 a, vec4 b, vec4 c) {
 }
 
 // Points on a patch edge are shared with the neighbouring patch, which meets them with the
-// edge's vertices the other way round (weight w for one is 1 - w for the other, exactly, by the
-// GL's tessellation invariance rules). Evaluating them from the vertex that comes first in an
-// order both patches agree on (its world position), with `precise` so that no fused
+// edge's vertices the other way round (the GL's tessellation invariance rules make the points
+// along an edge the same from either side, their two weights summing to exactly 1). Evaluating
+// them from the vertex that comes first in an order both patches agree on (its world position),
+// by the weight of the other vertex as the tessellator gave it, with `precise` so that no fused
 // multiply-add differs, gives both bit-identical points: no pinholes open between patches.
 bool comesFirst(int a, int b) {
   vec3 pa = vIn[a].worldPosition, pb = vIn[b].worldPosition;
@@ -53,12 +54,13 @@ struct EdgePoint {
   vec2 uv;
 };
 
-EdgePoint edgePoint(int a, int b, float weightB) {
+EdgePoint edgePoint(int a, int b, float weightA, float weightB) {
   int from = comesFirst(a, b) ? a : b;
   int to = from == a ? b : a;
-  precise float t = from == a ? weightB : 1.0 - weightB;
+  float t = from == a ? weightB : weightA;
   EdgePoint point;
-  precise vec3 position = vIn[from].worldPosition + t * (vIn[to].worldPosition - vIn[from].worldPosition);
+  precise vec3 position =
+      vIn[from].worldPosition + t * (vIn[to].worldPosition - vIn[from].worldPosition);
   precise vec3 normal = vIn[from].worldNormal + t * (vIn[to].worldNormal - vIn[from].worldNormal);
   precise vec2 uv = vIn[from].uv + t * (vIn[to].uv - vIn[from].uv);
   point.position = position;
@@ -79,9 +81,9 @@ void main() {
     uv = vIn[corner].uv;
   } else if (weights.x == 0.0 || weights.y == 0.0 || weights.z == 0.0) {
     // On the edge opposite the vertex whose weight is 0.
-    EdgePoint point = weights.z == 0.0   ? edgePoint(0, 1, weights.y)
-                      : weights.x == 0.0 ? edgePoint(1, 2, weights.z)
-                                         : edgePoint(2, 0, weights.x);
+    EdgePoint point = weights.z == 0.0   ? edgePoint(0, 1, weights.x, weights.y)
+                      : weights.x == 0.0 ? edgePoint(1, 2, weights.y, weights.z)
+                                         : edgePoint(2, 0, weights.z, weights.x);
     position = point.position;
     normal = point.normal;
     uv = point.uv;
@@ -97,7 +99,6 @@ void main() {
   vOut.worldPosition = position;
   vOut.uv = uv;
   vOut.worldNormal = normal;
-  vOut.worldTangent =
-      blend(vIn[0].worldTangent, vIn[1].worldTangent, vIn[2].worldTangent);
+  vOut.worldTangent = blend(vIn[0].worldTangent, vIn[1].worldTangent, vIn[2].worldTangent);
   gl_Position = uViewProjection * vec4(position, 1.0);
 }
