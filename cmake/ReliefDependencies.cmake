@@ -9,6 +9,8 @@ pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 find_library(FFTW3F_THREADS_LIBRARY fftw3f_threads REQUIRED)
 # zlib for Relief's own PNG writer (core/image/PngWriter.h).
 find_package(ZLIB REQUIRED)
+# libdeflate for its reader (core/image/PngReader.h): whole-buffer inflate at 2.5x zlib's speed.
+pkg_check_modules(DEFLATE REQUIRED IMPORTED_TARGET libdeflate)
 # Zstandard for KTX2 supercompression (scheme 2).
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
 

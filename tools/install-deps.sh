@@ -11,7 +11,7 @@ packages=(
   qt6-base-dev libqt6opengl6-dev libqt6openglwidgets6 qt6-qpa-plugins qt6-charts-dev
   # domain libraries
   libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev libassimp-dev
-  libsquish-dev libastcenc-dev android-libetc1-dev libfftw3-dev libxcb1-dev libzstd-dev zlib1g-dev
+  libsquish-dev libastcenc-dev android-libetc1-dev libfftw3-dev libxcb1-dev libzstd-dev zlib1g-dev libdeflate-dev
   # tests: GoogleTest, a headless X server with Mesa's software OpenGL, shader validation
   libgtest-dev libgmock-dev xvfb xauth mesa-utils libgl1-mesa-dri glslang-tools
   # screenshots and independent image readers used while testing; scikit-image ships the real
