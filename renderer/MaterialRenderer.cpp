@@ -73,6 +73,7 @@ void MaterialRenderer::releaseResources() {
   m_textures.release();
   m_materialPrograms.clear();
   m_backgroundProgram.release();
+  m_reducedTarget.reset();
   glDeleteVertexArrays(1, &m_emptyVao);
   m_emptyVao = 0;
   m_initialized = false;
@@ -300,8 +301,46 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
   program.setUniformValue("uRoughnessMap", kFirstMapUnit + int(MapSlot::Roughness));
 }
 
+std::pair<int, int> MaterialRenderer::reducedSize(int width, int height, float scale) {
+  return {std::max(int(std::lround(float(width) * scale)), 1),
+          std::max(int(std::lround(float(height) * scale)), 1)};
+}
+
+core::Status MaterialRenderer::renderReduced(const FrameSettings& frame, int width, int height,
+                                             float scale, unsigned framebuffer) {
+  if (scale >= 1.0f)
+    return render(frame, width, height, framebuffer);
+  if (frame.output != FrameOutput::Display || !(scale > 0.0f))
+    return core::makeError("reduced-resolution frames are drawn for display only, at a scale > 0");
+  const auto [reducedWidth, reducedHeight] = reducedSize(width, height, scale);
+  if (!m_reducedTarget || m_reducedTarget->size() != QSize(reducedWidth, reducedHeight)) {
+    // RGBA8 like the window's framebuffer: the shaders write display-encoded colour, so the
+    // stretch filters the same values the full frame would show.
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    format.setInternalTextureFormat(GL_RGBA8);
+    m_reducedTarget =
+        std::make_unique<QOpenGLFramebufferObject>(reducedWidth, reducedHeight, format);
+  }
+  if (!m_reducedTarget->isValid()) {
+    m_reducedTarget.reset();
+    return core::makeError("cannot create a " + std::to_string(reducedWidth) + "x" +
+                           std::to_string(reducedHeight) + " framebuffer (out of GPU memory?)");
+  }
+  if (core::Status status = render(frame, reducedWidth, reducedHeight, m_reducedTarget->handle());
+      !status) {
+    return status;
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, m_reducedTarget->handle());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glBlitFramebuffer(0, 0, reducedWidth, reducedHeight, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                    GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  return {};
+}
+
 core::Result<core::Image> MaterialRenderer::renderToImage(const FrameSettings& frame, int width,
-                                                          int height) {
+                                                          int height, float scale) {
   const int limit = maxImageSize();
   if (width < 1 || height < 1 || width > limit || height > limit) {
     return core::makeError("cannot render " + std::to_string(width) + "x" + std::to_string(height) +
@@ -316,7 +355,7 @@ core::Result<core::Image> MaterialRenderer::renderToImage(const FrameSettings& f
     return core::makeError("cannot create a " + std::to_string(width) + "x" +
                            std::to_string(height) + " framebuffer (out of GPU memory?)");
   }
-  if (core::Status status = render(frame, width, height, fbo.handle()); !status) {
+  if (core::Status status = renderReduced(frame, width, height, scale, fbo.handle()); !status) {
     return core::makeError(status.error());
   }
 

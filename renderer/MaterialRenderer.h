@@ -14,10 +14,12 @@
 #include "renderer/TextureCache.h"
 
 #include <QOpenGLExtraFunctions>
+#include <QOpenGLFramebufferObject>
 
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace relief::renderer {
 
@@ -41,10 +43,19 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   // Draws into `framebuffer` (the window's or an FBO) at width x height pixels. A shader
   // variant that does not compile leaves the background and returns the mapped log.
   core::Status render(const FrameSettings& frame, int width, int height, unsigned framebuffer);
+  // The same frame drawn at `scale` (0 < scale <= 1) of width x height into a framebuffer of
+  // the renderer's own, then stretched over `framebuffer`'s width x height with bilinear
+  // filtering: an interactive frame that costs about scale^2 of a full one. Scale 1 is render().
+  // Display output only (a stretched data view would mix values that do not mix).
+  core::Status renderReduced(const FrameSettings& frame, int width, int height, float scale,
+                             unsigned framebuffer);
+  // The pixel size renderReduced draws at for a scale (at least 1x1).
+  static std::pair<int, int> reducedSize(int width, int height, float scale);
 
   // Renders into an offscreen framebuffer and reads it back: RGBA8 sRGB for Display output,
-  // RGBA32F for data. Rows top first.
-  core::Result<core::Image> renderToImage(const FrameSettings& frame, int width, int height);
+  // RGBA32F for data. Rows top first. A `scale` below 1 draws as renderReduced does.
+  core::Result<core::Image> renderToImage(const FrameSettings& frame, int width, int height,
+                                          float scale = 1.0f);
   // The median time of `frames` renders of `frame` into a framebuffer of the size, each drawn
   // and finished (glFinish) on the CPU clock, after one untimed frame (compiling, uploading).
   // GL timer queries are not used: llvmpipe reports nonsense for them.
@@ -80,6 +91,8 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   TextureCache m_textures;
   core::Material m_material;
   unsigned m_emptyVao = 0;  // core profile needs a bound VAO even for attribute-less draws
+  // renderReduced's target, kept while its size stays the same (interactive frames come in runs).
+  std::unique_ptr<QOpenGLFramebufferObject> m_reducedTarget;
 };
 
 }  // namespace relief::renderer

@@ -64,10 +64,10 @@ void OffscreenRenderer::setNativeCompressedUploads(bool native) {
 }
 
 core::Result<core::Image> OffscreenRenderer::render(const FrameSettings& frame, int width,
-                                                    int height) {
+                                                    int height, float scale) {
   if (!makeCurrent())
     return core::makeError("cannot make the offscreen OpenGL context current");
-  return m_renderer->renderToImage(frame, width, height);
+  return m_renderer->renderToImage(frame, width, height, scale);
 }
 
 core::Result<core::Image> OffscreenRenderer::render(const RenderView& view, int width, int height) {

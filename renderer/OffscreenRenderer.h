@@ -34,8 +34,10 @@ class OffscreenRenderer {
   // Compressed previews uploaded as blocks (default) or decoded by core.
   void setNativeCompressedUploads(bool native);
   // Rows top first: sRGB RGBA8 values for Display output (exactly what the viewport shows for
-  // the same frame), RGBA32F for data outputs.
-  core::Result<core::Image> render(const FrameSettings& frame, int width, int height);
+  // the same frame), RGBA32F for data outputs. A `scale` below 1 draws the frame smaller and
+  // stretches it, as the viewport does while the user drags (MaterialRenderer::renderReduced).
+  core::Result<core::Image> render(const FrameSettings& frame, int width, int height,
+                                   float scale = 1.0f);
   // The shaded material (Display output, no debug view).
   core::Result<core::Image> render(const RenderView& view, int width, int height);
   // The median of `frames` timed frames (MaterialRenderer::medianFrameMilliseconds).

@@ -46,6 +46,7 @@ class GeneratorRunner;
 }  // namespace relief::ui::tasks
 
 namespace relief::ui::inline viewport {
+class InteractionMonitor;
 class ViewportWidget;
 }  // namespace relief::ui::viewport
 

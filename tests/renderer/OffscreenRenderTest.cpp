@@ -4,6 +4,9 @@
 #include "support/ImageCompare.h"
 #include "support/OffscreenFixture.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace relief::test {
 namespace {
 
@@ -51,6 +54,54 @@ TEST_F(OffscreenRender, SameInputsGiveTheSamePixels) {
   core::Result<core::Image> second = offscreen().render(renderer::RenderView(), 96, 64);
   ASSERT_TRUE(first.ok() && second.ok());
   EXPECT_EQ(compareImages(first.value(), second.value()).maxError, 0.0);
+}
+
+// An interactive frame (MaterialRenderer::renderReduced) is the frame drawn at the reduced size,
+// then stretched with bilinear filtering: each stretched pixel is the bilinear interpolation of
+// the small frame at its centre, (x + 0.5) / 2 - 0.5 in the small frame's texels at scale 1/2.
+// Tolerance: the blit rounds to 8 bits once more (1/255) and GL allows the filter a few bits of
+// weight precision; 2.5/255 covers both.
+TEST_F(OffscreenRender, AReducedFrameIsTheSmallFrameStretchedBilinearly) {
+  offscreen().setMesh(core::makeSphere());
+  offscreen().setMaterial(core::Material());
+  renderer::FrameSettings frame;
+  frame.view.camera.frame(core::makeSphere().bounds(), 1.5f);
+  constexpr int kWidth = 120, kHeight = 80;
+  core::Result<core::Image> small = offscreen().render(frame, kWidth / 2, kHeight / 2);
+  core::Result<core::Image> stretched = offscreen().render(frame, kWidth, kHeight, 0.5f);
+  ASSERT_TRUE(small.ok() && stretched.ok());
+  ASSERT_EQ(stretched->width(), kWidth);
+  const auto smallAt = [&](int x, int y, int channel) {
+    return small->at(std::clamp(x, 0, kWidth / 2 - 1), std::clamp(y, 0, kHeight / 2 - 1), channel);
+  };
+  double worst = 0.0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const float u = (float(x) + 0.5f) / 2.0f - 0.5f;
+      const float v = (float(y) + 0.5f) / 2.0f - 0.5f;
+      const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
+      const float fx = u - float(x0), fy = v - float(y0);
+      for (int c = 0; c < 3; ++c) {
+        const float expected =
+            (1 - fy) * ((1 - fx) * smallAt(x0, y0, c) + fx * smallAt(x0 + 1, y0, c)) +
+            fy * ((1 - fx) * smallAt(x0, y0 + 1, c) + fx * smallAt(x0 + 1, y0 + 1, c));
+        worst = std::max(worst, double(std::abs(stretched->at(x, y, c) - expected)));
+      }
+    }
+  }
+  EXPECT_LE(worst, 2.5 / 255.0);
+  // And it is not simply the full frame: the sphere's silhouette is softer.
+  core::Result<core::Image> full = offscreen().render(frame, kWidth, kHeight);
+  ASSERT_TRUE(full.ok());
+  EXPECT_GT(compareImages(full.value(), stretched.value()).maxError, 8.0 / 255.0);
+}
+
+TEST_F(OffscreenRender, ReducedFramesAreForDisplayOnly) {
+  renderer::FrameSettings frame;
+  frame.output = renderer::FrameOutput::FloatData;
+  core::Result<core::Image> image = offscreen().render(frame, 64, 64, 0.5f);
+  ASSERT_FALSE(image.ok());
+  EXPECT_NE(image.error().find("display"), std::string::npos) << image.error();
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "renderer/SampleCount.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/tasks/BackgroundTask.h"
+#include "ui/viewport/InteractionMonitor.h"
 #include "ui/window/QtText.h"
 
 #include <QElapsedTimer>
@@ -30,6 +31,8 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
       m_document(document),
       m_mesh(core::makePrimitive(core::PrimitiveShape::Plane)),
       m_samplesTimer(new QTimer(this)),
+      m_interaction(new InteractionMonitor(this)),
+      m_restTimer(new QTimer(this)),
       m_errorTask(new BackgroundTask(this)) {
   setMinimumSize(320, 240);
   m_samplesTimer->setSingleShot(true);
@@ -43,6 +46,12 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
     measureSamples(std::max(int(std::lround(width() * ratio)) / 4, 1),
                    std::max(int(std::lround(height() * ratio)) / 4, 1));
     doneCurrent();
+  });
+  m_restTimer->setSingleShot(true);
+  m_restTimer->setInterval(kRestMs);
+  connect(m_restTimer, &QTimer::timeout, this, [this] {
+    m_rested = true;
+    update();
   });
   setFocusPolicy(Qt::StrongFocus);
   setToolTip(
@@ -77,6 +86,7 @@ ViewportWidget::~ViewportWidget() {
 
 void ViewportWidget::changed() {
   m_errorStale = true;
+  m_rested = false;
   update();
 }
 
@@ -296,8 +306,19 @@ void ViewportWidget::paintGL() {
   }
   if (frame.debugView == core::DebugView::Error)
     frame.debugView = core::DebugView::Shading;
-  if (core::Status status =
-          m_renderer->render(frame, pixelWidth, pixelHeight, defaultFramebufferObject());
+  // While the user drags, a frame that would take longer than the budget is drawn smaller and
+  // stretched; a full frame follows kRestMs after the last change.
+  const double fullPixels = double(pixelWidth) * double(pixelHeight);
+  const float scale = !m_rested && m_interaction->isInteracting()
+                          ? m_resolution.nextInteractiveScale(fullPixels)
+                          : 1.0f;
+  if (scale < 1.0f) {
+    m_restTimer->start();
+  } else {
+    m_resolution.resetScale();
+  }
+  if (core::Status status = m_renderer->renderReduced(frame, pixelWidth, pixelHeight, scale,
+                                                      defaultFramebufferObject());
       !status) {
     Q_EMIT renderError(QString::fromStdString(status.error()));
   }
@@ -312,9 +333,13 @@ void ViewportWidget::paintGL() {
   // draws on demand, so the stall never costs an animation frame.
   context()->functions()->glFinish();
   const double milliseconds = double(timer.nsecsElapsed()) / 1.0e6;
+  const auto [drawnWidth, drawnHeight] =
+      renderer::MaterialRenderer::reducedSize(pixelWidth, pixelHeight, scale);
+  m_resolution.recordFrame(milliseconds, double(drawnWidth) * double(drawnHeight));
+  m_lastFrameScale = scale;
   m_samplesTimer->start();  // every frame restarts the wait for the view to rest
   paintOverlays();
-  Q_EMIT frameRendered(milliseconds);
+  Q_EMIT frameRendered(milliseconds, double(scale));
 }
 
 void ViewportWidget::measureSamples(int pixelWidth, int pixelHeight) {

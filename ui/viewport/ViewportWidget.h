@@ -1,7 +1,9 @@
 // ViewportWidget: the 3D view of the material. Hands its GL context to the renderer (widgets
 // never call GL themselves), turns mouse and keys into camera, light and divider changes,
 // paints overlays (heat-map legends, the A/B divider, the error view) and redraws only when
-// the document, the view or the size changed.
+// the document, the view or the size changed. While the user drags (a slider, the camera, the
+// light), frames are drawn at a reduced resolution that keeps them within a time budget, and the
+// full resolution follows once the input rests.
 #pragma once
 
 #include "core/compression/Compressor.h"
@@ -11,6 +13,7 @@
 #include "core/view/ViewState.h"
 #include "renderer/FrameSettings.h"
 #include "ui/Forward.h"
+#include "ui/viewport/AdaptiveResolution.h"
 
 #include <QImage>
 #include <QOpenGLWidget>
@@ -96,15 +99,25 @@ class ViewportWidget : public QOpenGLWidget {
   // The error view's last numbers, when it has finished.
   const std::optional<core::UvErrorMap>& errorMap() const { return m_errorMap; }
 
+  // The resolution of the last frame, as a fraction of the full size (1: full resolution).
+  float lastFrameScale() const { return m_lastFrameScale; }
+  // What a frame drawn while the user drags may cost (AdaptiveResolution::kDefaultBudgetMs).
+  void setInteractiveFrameBudget(double milliseconds) {
+    m_resolution.setBudgetMilliseconds(milliseconds);
+  }
+
   static constexpr float kOrbitDegreesPerPixel = 0.4f;
   static constexpr int kDividerGrabPixels = 6;
   static constexpr int kSamplesDelayMs = 400;
+  // A reduced frame is followed by a full one once no change came for this long.
+  static constexpr int kRestMs = 250;
 
  public Q_SLOTS:
   void frameMesh();
 
  Q_SIGNALS:
-  void frameRendered(double milliseconds);
+  // A frame was drawn in `milliseconds` at `scale` of the full resolution.
+  void frameRendered(double milliseconds, double scale);
   // Height samples (texel fetches) per covered pixel, the mean, measured once the view has
   // rested (kSamplesDelayMs after the last frame) on a quarter-size steps view.
   void samplesMeasured(double meanPerPixel);
@@ -154,6 +167,13 @@ class ViewportWidget : public QOpenGLWidget {
 
   // The samples-per-pixel measurement, after the view rests.
   QTimer* m_samplesTimer;
+
+  // Reduced frames while the user drags; the full frame once the input rests.
+  InteractionMonitor* m_interaction;
+  AdaptiveResolution m_resolution;
+  QTimer* m_restTimer;
+  bool m_rested = true;  // no change since the rest timer last fired: draw at full resolution
+  float m_lastFrameScale = 1.0f;
 
   // The error view: a CPU trace per frame, in the background.
   BackgroundTask* m_errorTask;  // the error view's exact trace

@@ -40,6 +40,8 @@
 #include <QStatusBar>
 #include <QUndoView>
 
+#include <cmath>
+
 namespace relief::ui::inline window {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
@@ -86,8 +88,11 @@ MainWindow::MainWindow(QWidget* parent)
                 15000);
           });
 
-  m_frameTime->setToolTip(tr("CPU time of the last frame, including waiting for the GPU"));
+  m_frameTime->setToolTip(tr(
+      "CPU time of the last frame, including waiting for the GPU. While you drag, frames are "
+      "drawn at a reduced resolution that keeps them fluid; the full one follows when you stop."));
   m_frameTime->setMinimumWidth(110);
+  m_frameTime->setObjectName(QStringLiteral("frameTime"));
   m_samples->setObjectName(QStringLiteral("samplesPerPixel"));
   m_samples->setToolTip(
       tr("Height samples (texel fetches) per covered pixel, the mean, measured once the view "
@@ -283,8 +288,15 @@ void MainWindow::showControlsHelp() {
   QMessageBox::information(this, tr("Viewport controls"), m_viewport->toolTip());
 }
 
-void MainWindow::showFrameTime(double milliseconds) {
-  m_frameTime->setText(tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
+void MainWindow::showFrameTime(double milliseconds, double scale) {
+  if (scale < 1.0) {
+    // A reduced frame while the user drags; the full one follows when the input rests.
+    m_frameTime->setText(tr("frame %1 ms at %2% resolution")
+                             .arg(milliseconds, 0, 'f', 1)
+                             .arg(int(std::lround(scale * 100.0))));
+  } else {
+    m_frameTime->setText(tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
+  }
 }
 
 void MainWindow::updateTitle() {

@@ -71,7 +71,7 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createMenus();
   void chooseMesh();
-  void showFrameTime(double milliseconds);
+  void showFrameTime(double milliseconds, double scale);
   void updateTitle();
   void showControlsHelp();
   void showExportDialog();
