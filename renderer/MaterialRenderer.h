@@ -15,6 +15,7 @@
 
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFramebufferObject>
+#include <QOpenGLTexture>
 
 #include <map>
 #include <memory>
@@ -76,6 +77,7 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   ShaderProgram* programFor(const core::Material& material, const FrameSettings& frame,
                             std::string& error);
   void drawBackground(const RenderView& view);
+  void createSplitSumTable();  // pbr shading's (A, B) table (core/shading/SplitSumLut.h)
   // `width` x `height`: the viewport in pixels.
   void drawMaterial(ShaderProgram& program, const core::Material& material,
                     const FrameSettings& frame, int width, int height);
@@ -93,6 +95,7 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   unsigned m_emptyVao = 0;  // core profile needs a bound VAO even for attribute-less draws
   // renderReduced's target, kept while its size stays the same (interactive frames come in runs).
   std::unique_ptr<QOpenGLFramebufferObject> m_reducedTarget;
+  std::unique_ptr<QOpenGLTexture> m_splitSumTable;
 };
 
 }  // namespace relief::renderer

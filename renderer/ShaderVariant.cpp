@@ -43,6 +43,8 @@ std::vector<std::string> materialShaderDefines(const core::Material& material, c
   if (material.parameterFlag(ParamId::HeightInNormalAlpha)) {
     defines.emplace_back("HEIGHT_IN_NORMAL_ALPHA");
   }
+  if (core::ShadingModel(int(material.parameter(ParamId::Shading))) == core::ShadingModel::Pbr)
+    defines.emplace_back("SHADING_PBR");
   if (output == FrameOutput::EyeRays) {
     defines.emplace_back("DEBUG_VIEW VIEW_RAY");  // no depth offset: nothing is shaded
     return defines;

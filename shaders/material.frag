@@ -12,6 +12,7 @@
 #include "include/self_shadow.glsl"
 #include "include/normal_mapping.glsl"
 #include "include/lighting.glsl"
+#include "include/pbr.glsl"
 #include "include/displaced_position.glsl"
 #include "include/heatmap.glsl"
 #include "include/color.glsl"
@@ -100,7 +101,13 @@ void main() {
   surface.roughness = sampleMap(uRoughnessMap, visible.uv, dx, dy).r;
 
 #if DEBUG_VIEW == VIEW_SHADING
-  fragColor = vec4(linearToSrgb(shadeBlinnPhong(surface, L, V, shadow)), 1.0);
+#ifdef SHADING_PBR
+  vec3 radiance = shadePbr(surface, L, V, shadow);
+#else
+  vec3 radiance = shadeBlinnPhong(surface, L, V, shadow);
+#endif
+  // Float output: the linear radiance, unclamped (what --format exr measures).
+  fragColor = dataOutput(radiance, linearToSrgb(radiance));
 #elif DEBUG_VIEW == VIEW_HEIGHT
   fragColor = dataOutput(vec3(visible.height), vec3(visible.height));
 #elif DEBUG_VIEW == VIEW_NORMAL

@@ -91,6 +91,11 @@ CliOptions renderOptions() {
                      QStringLiteral("Overrides the preset's technique: ") +
                          enumNames(core::allTechniques(), core::techniqueName) + QLatin1Char('.'),
                      {}});
+  options.push_back({QStringLiteral("shading"),
+                     QStringLiteral("name"),
+                     QStringLiteral("Overrides the preset's shading: classic (Blinn-Phong) or pbr "
+                                    "(glTF metallic-roughness); as --set shading=NAME."),
+                     {}});
   options.push_back({QStringLiteral("view"), QStringLiteral("name"),
                      QStringLiteral("What to render: ") +
                          enumNames(core::allDebugViews(), core::debugViewName) +
@@ -111,7 +116,8 @@ CliOptions renderOptions() {
       {QStringLiteral("format"),
        QStringLiteral("png|exr"),
        QStringLiteral("png (8-bit colours, legends on heat maps) or exr (float: raw values of "
-                      "data views such as uv, offset, steps, depth, error). Default: from --out."),
+                      "data views such as uv, offset, steps, depth, error; the shading view's "
+                      "linear radiance, unclamped). Default: from --out."),
        {}});
   return options;
 }
@@ -159,11 +165,12 @@ void addLegend(core::Image& image, const RenderRequest& request) {
 }
 
 // The requested view: 8-bit display colours with a legend, or for EXR the raw values of data
-// views (linear colour for the others).
+// views and the shading view's linear radiance (linear colour for the other views).
 core::Result<core::Image> renderView(renderer::OffscreenRenderer& offscreen,
                                      const RenderRequest& request) {
   renderer::FrameSettings frame = request.frame;
-  const bool raw = request.exr && core::isDataView(frame.debugView);
+  const bool raw = request.exr && (core::isDataView(frame.debugView) ||
+                                   frame.debugView == core::DebugView::Shading);
   frame.output = raw ? renderer::FrameOutput::FloatData : renderer::FrameOutput::Display;
   core::Result<core::Image> image = offscreen.render(frame, request.width, request.height);
   if (!image || raw)
@@ -271,7 +278,7 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
   return std::nullopt;
 }
 
-// --set, --technique and --view.
+// --set, --technique, --shading and --view.
 std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderRequest& request) {
   for (const QString& assignment : parser.values(QStringLiteral("set"))) {
     const qsizetype equals = assignment.indexOf(QLatin1Char('='));
@@ -303,6 +310,16 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
       return kExitUsage;
     }
     request.material.setTechnique(*technique);
+  }
+  if (parser.isSet(QStringLiteral("shading"))) {
+    core::Result<double> shading =
+        core::parseOptionValue(core::parameterSpec(core::ParamId::Shading),
+                               parser.value(QStringLiteral("shading")).toStdString());
+    if (!shading) {
+      printError(QStringLiteral("--shading: ") + QString::fromStdString(shading.error()));
+      return kExitUsage;
+    }
+    request.material.setParameter(core::ParamId::Shading, shading.value());
   }
   const QString viewName = parser.value(QStringLiteral("view"));
   const std::optional<core::DebugView> view = core::findDebugView(viewName.toStdString());

@@ -27,6 +27,19 @@ double roughnessFromShininess(double shininess) {
   return std::clamp(std::pow(alphaSquared, 0.25), 0.0, 1.0);
 }
 
+bool shadesPbr(const Material& material) {
+  return ShadingModel(int(material.parameter(ParamId::Shading))) == ShadingModel::Pbr;
+}
+
+double exportedMetallic(const Material& material) {
+  return shadesPbr(material) ? material.parameter(ParamId::Metallic) : 0.0;
+}
+
+double exportedRoughness(const Material& material) {
+  return shadesPbr(material) ? material.parameter(ParamId::Roughness)
+                             : roughnessFromShininess(material.parameter(ParamId::Shininess));
+}
+
 Image openGlNormalMap(const Image& normals, bool yDown) {
   if (!yDown || normals.channels() < 2)
     return normals;
@@ -59,7 +72,16 @@ std::optional<Image> packEngineMasks(const Material& material, std::string_view 
   if (layout == nullptr || (occlusion == nullptr && roughness == nullptr))
     return std::nullopt;
   // The material's constant roughness, not the neutral 1, stands in for a missing map.
-  const double constantRoughness = roughnessFromShininess(material.parameter(ParamId::Shininess));
+  const double constantRoughness = exportedRoughness(material);
+  // Under pbr the viewport reads factor x map: bake the factor in.
+  std::optional<Image> scaledRoughness;
+  if (roughness && shadesPbr(material) && material.parameter(ParamId::Roughness) != 1.0) {
+    scaledRoughness = *roughness;
+    const float factor = float(material.parameter(ParamId::Roughness));
+    for (std::size_t i = 0; i < scaledRoughness->valueCount(); ++i)
+      scaledRoughness->data()[i] *= factor;
+    roughness = &*scaledRoughness;
+  }
   std::vector<NamedMap> maps;
   if (occlusion)
     maps.push_back({"ao", occlusion});
@@ -67,7 +89,9 @@ std::optional<Image> packEngineMasks(const Material& material, std::string_view 
     maps.push_back({"roughness", roughness});
   std::vector<std::string> terms;
   for (std::string_view term : layout->terms) {
-    if (roughness == nullptr && term == "roughness.r")
+    if (term == "metallic.r")
+      terms.push_back(engineNumber(exportedMetallic(material)));
+    else if (roughness == nullptr && term == "roughness.r")
       terms.push_back(engineNumber(constantRoughness));
     else if (roughness == nullptr && term == "1-roughness.r")
       terms.push_back(engineNumber(1.0 - constantRoughness));

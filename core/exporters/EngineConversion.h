@@ -21,6 +21,14 @@ struct EngineExportResult {
 };
 
 double roughnessFromShininess(double shininess);
+// The metallic-roughness constants the viewport shows: under pbr shading the metallic and
+// roughness parameters, under classic the Blinn-Phong equivalent (roughnessFromShininess) and
+// no metal.
+double exportedMetallic(const Material& material);
+double exportedRoughness(const Material& material);
+// Whether the material shades with metallic-roughness (shading = pbr): its roughness map is then
+// multiplied by the roughness factor, as glTF's is.
+bool shadesPbr(const Material& material);
 
 // A normal map in the OpenGL convention (+Y up), converting a DirectX one if needed.
 Image openGlNormalMap(const Image& normals, bool yDown);
@@ -37,7 +45,8 @@ bool exportsParallax(const Material& material);
 
 // One of packLayouts()'s layouts ("orm", "unity-mask", "unity-metallic") filled from the
 // material's AO and roughness maps. A missing roughness map takes the material's constant
-// roughness (roughnessFromShininess), a missing AO map 1, metallic is 0 (Relief has no metals).
+// roughness (exportedRoughness), a missing AO map 1, metallic is exportedMetallic; under pbr
+// shading the roughness map is baked with its factor (engines' mask maps carry no factor).
 // nullopt when the material has neither map: the engine's constant factors then say it all.
 std::optional<Image> packEngineMasks(const Material& material, std::string_view layoutName);
 

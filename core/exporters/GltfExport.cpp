@@ -114,9 +114,8 @@ Result<std::string> exportGltf(const Preset& preset, const Mesh& mesh, const std
     return int(textures.size() - 1);
   };
 
-  QJsonObject pbr{
-      {"metallicFactor", 0.0},
-      {"roughnessFactor", roughnessFromShininess(material.parameter(ParamId::Shininess))}};
+  QJsonObject pbr{{"metallicFactor", exportedMetallic(material)},
+                  {"roughnessFactor", exportedRoughness(material)}};
   QJsonObject gltfMaterial{{"name", QString::fromStdString(stem)}};
   if (const Image* color = material.image(MapSlot::Color)) {
     auto index = addTexture(*color, "color", SampleFormat::UInt8);
@@ -125,16 +124,19 @@ Result<std::string> exportGltf(const Preset& preset, const Mesh& mesh, const std
     pbr.insert("baseColorTexture", QJsonObject{{"index", index.value()}});
   }
   if (const Image* roughness = material.image(MapSlot::Roughness)) {
-    // glTF reads roughness from green and metalness from blue.
+    // glTF reads roughness from green and metalness from blue, each times its factor: blue 1
+    // lets metallicFactor through; under pbr the roughness factor multiplies the map as in the
+    // viewport, under classic the map is the roughness.
     Image packed(roughness->width(), roughness->height(), 3);
     for (std::size_t p = 0; p < packed.pixelCount(); ++p) {
       packed.data()[p * 3 + 1] = roughness->data()[p * std::size_t(roughness->channels())];
+      packed.data()[p * 3 + 2] = 1.0f;
     }
     auto index = addTexture(packed, "metallic_roughness", SampleFormat::UInt8);
     if (!index)
       return makeError(index.error());
     pbr.insert("metallicRoughnessTexture", QJsonObject{{"index", index.value()}});
-    pbr.insert("roughnessFactor", 1.0);
+    pbr.insert("roughnessFactor", shadesPbr(material) ? exportedRoughness(material) : 1.0);
   }
   gltfMaterial.insert("pbrMetallicRoughness", pbr);
   if (const Image* normalMap = material.image(MapSlot::Normal)) {

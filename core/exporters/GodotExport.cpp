@@ -96,8 +96,9 @@ Result<EngineExportResult> exportGodot(const Preset& preset, const std::string& 
   tres << "resource_name = \"" << stem << "\"\n";
   if (!idOf("albedo").empty())
     tres << "albedo_texture = ExtResource(\"" << idOf("albedo") << "\")\n";
-  tres << "roughness = " << number(roughnessFromShininess(material.parameter(ParamId::Shininess)))
-       << "\n";
+  // Godot multiplies roughness_texture by roughness, as the viewport does under pbr.
+  tres << "metallic = " << number(exportedMetallic(material)) << "\n";
+  tres << "roughness = " << number(exportedRoughness(material)) << "\n";
   if (!idOf("roughness").empty()) {
     tres << "roughness_texture = ExtResource(\"" << idOf("roughness") << "\")\n";
   }

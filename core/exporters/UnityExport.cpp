@@ -227,7 +227,7 @@ Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& 
     if (!urp)
       mat.keywords.push_back("_NORMALMAP_TANGENT_SPACE");
   }
-  const double roughness = roughnessFromShininess(material.parameter(ParamId::Shininess));
+  const double roughness = exportedRoughness(material);
   const std::optional<Image> masks =
       packEngineMasks(material, urp ? "unity-metallic" : "unity-mask");
   if (masks) {
@@ -262,7 +262,7 @@ Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& 
   // Relief's smoothness when no map carries it: Unity's smoothness is 1 - perceptual roughness.
   // With a map, URP multiplies the map's alpha by _Smoothness and HDRP remaps the mask's alpha
   // from _SmoothnessRemapMin..Max, so those stay neutral.
-  mat.floats.push_back({"_Metallic", 0.0});
+  mat.floats.push_back({"_Metallic", exportedMetallic(material)});
   mat.floats.push_back({"_Smoothness", masks ? 1.0 : 1.0 - roughness});
   mat.colors.push_back({"_BaseColor", "{r: 1, g: 1, b: 1, a: 1}"});
   mat.colors.push_back({"_Color", "{r: 1, g: 1, b: 1, a: 1}"});

@@ -69,7 +69,7 @@ Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string&
       return makeError(s.error());
     }
   }
-  const double roughness = roughnessFromShininess(material.parameter(ParamId::Shininess));
+  const double roughness = exportedRoughness(material);
   QJsonObject constants;
   if (const std::optional<Image> orm = packEngineMasks(material, "orm")) {
     const QJsonObject channels{{QStringLiteral("r"), QStringLiteral("ambient occlusion")},
@@ -82,7 +82,7 @@ Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string&
     }
   } else {
     constants.insert(QStringLiteral("Roughness"), roughness);
-    constants.insert(QStringLiteral("Metallic"), 0.0);
+    constants.insert(QStringLiteral("Metallic"), exportedMetallic(material));
   }
 
   QJsonObject root{

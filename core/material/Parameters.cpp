@@ -114,10 +114,24 @@ std::vector<ParameterSpec> buildTable() {
         "normalYDown", "DirectX normal map (Y down)", false,
         "Read the normal map's green channel as Y pointing down (DirectX/Unreal convention) "
         "instead of up (OpenGL/Blender/Godot/glTF).")),
-    parameter(ParamId::Specular, kSurface, {ParamUse::Always, "uSpecular"}, numberOption(
+    parameter(ParamId::Shading, kSurface, {ParamUse::Always, ""}, choiceOption(
+        "shading", "Shading", {"classic", "pbr"}, 0,
+        "classic: Blinn-Phong under the light with a flat ambient term (the reference "
+        "documents' look). pbr: the glTF 2.0 metallic-roughness BRDF (GGX, Smith "
+        "height-correlated visibility, Schlick Fresnel, Lambert diffuse) under the light and "
+        "a uniform environment of the ambient's radiance, as engines shade.")),
+    parameter(ParamId::Metallic, kSurface, {ParamUse::Pbr, "uMetallic"}, numberOption(
+        "metallic", "Metallic", "0 dielectric .. 1 metal", 0.0, 1.0, 0.0, 2,
+        "glTF metallicFactor: 0 is a dielectric (plastic, stone, wood) whose colour is its "
+        "diffuse albedo, 1 a metal whose colour tints its reflection.")),
+    parameter(ParamId::Roughness, kSurface, {ParamUse::Pbr, "uRoughness"}, numberOption(
+        "roughness", "Roughness", "perceptual roughness, 0 mirror .. 1 matte", 0.0, 1.0, 0.5, 2,
+        "glTF roughnessFactor: multiplies the roughness map where there is one. The GGX width "
+        "is its square.")),
+    parameter(ParamId::Specular, kSurface, {ParamUse::Classic, "uSpecular"}, numberOption(
         "specular", "Specular", "fraction of the light colour", 0.0, 1.0, 0.25, 2,
         "Strength of the Blinn-Phong highlight.")),
-    parameter(ParamId::Shininess, kSurface, {ParamUse::Always, "uShininess"}, numberOption(
+    parameter(ParamId::Shininess, kSurface, {ParamUse::Classic, "uShininess"}, numberOption(
         "shininess", "Shininess", "Blinn-Phong exponent", 1.0, 256.0, 32.0, 0,
         "Sharpness of the highlight: the exponent on N.H. A roughness map, when present, "
         "scales it down per texel.")),
@@ -145,7 +159,8 @@ std::optional<ParamId> findParameter(std::string_view name) {
   return std::nullopt;
 }
 
-bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode shadows) {
+bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode shadows,
+                    ShadingModel shading) {
   switch (spec.use) {
     case ParamUse::Always:
       return true;
@@ -161,6 +176,10 @@ bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode s
       return technique == Technique::Displacement;
     case ParamUse::PerPixel:
       return technique != Technique::Displacement;
+    case ParamUse::Classic:
+      return shading == ShadingModel::Classic;
+    case ParamUse::Pbr:
+      return shading == ShadingModel::Pbr;
   }
   return true;
 }

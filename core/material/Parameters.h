@@ -41,6 +41,9 @@ enum class ParamId {
   // Surface
   NormalStrength,
   NormalYDown,
+  Shading,
+  Metallic,
+  Roughness,
   Specular,
   Shininess,
   Count,
@@ -49,6 +52,7 @@ enum class ParamId {
 // Values of the Choice parameters.
 enum class ShadowMode { Off, Hard, Soft };
 enum class UvEdge { Repeat, Clamp };
+enum class ShadingModel { Classic, Pbr };
 
 constexpr std::size_t kParamCount = std::size_t(ParamId::Count);
 
@@ -61,6 +65,8 @@ enum class ParamUse {
   SoftShadows,   // soft self-shadowing
   Tessellation,  // the displacement technique's tessellation
   PerPixel,      // what only the per-pixel techniques use (displacement moves real geometry)
+  Classic,       // Blinn-Phong shading's own terms
+  Pbr,           // metallic-roughness shading's own terms
 };
 
 // A material parameter: its OptionSpec (name = preset key and the CLI's --set name) plus its
@@ -84,8 +90,9 @@ inline double parameterDefault(ParamId id) {
   return parameterSpec(id).defaultValue;
 }
 
-// Whether the parameter changes the picture with this technique and shadow mode.
-bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode shadows);
+// Whether the parameter changes the picture with this technique, shadow mode and shading.
+bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode shadows,
+                    ShadingModel shading);
 
 // A full set of values indexed by ParamId, initialised to the defaults.
 using ParameterValues = std::array<double, kParamCount>;

@@ -30,12 +30,17 @@ uniform bool uNormalYDown;      // DirectX normal maps store +Y pointing down
 uniform bool uNormalTwoChannel; // the normal texture holds X, Y only (BC5, EAC RG11, DXT5nm)
 uniform float uSpecular;        // highlight strength
 uniform float uShininess;       // Blinn-Phong exponent
+uniform float uMetallic;        // glTF metallicFactor
+uniform float uRoughness;       // glTF roughnessFactor (perceptual)
+uniform bool uHasRoughnessMap;  // the roughness slot holds a map (else its neutral 0 texel)
+uniform sampler2D uSplitSumLut; // (A, B) over N.V (s) and roughness (t) (core/shading)
 
 uniform vec3 uCameraPosition;   // world space
 uniform mat4 uViewProjection;
 uniform vec3 uLightDirection;   // world space, unit, toward the light
 uniform vec3 uLightColor;       // linear RGB times intensity
-uniform float uAmbient;         // fraction of the albedo lit without direction
+uniform float uAmbient;         // classic: fraction of the albedo lit without direction;
+                                // pbr: radiance of the uniform environment
 uniform vec2 uDepthDisplayRange;  // world distances mapped to black..white in the depth view
 
 // Map textures keep their rows top first, as image files and compressed blocks store them

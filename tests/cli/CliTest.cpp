@@ -325,6 +325,33 @@ TEST(Cli, RenderTakesTechniqueViewMeshAndFormat) {
   EXPECT_TRUE(offGrid);
 }
 
+// --shading pbr with --format exr writes the linear radiance, unclamped: the highlight of a
+// smooth metal on a sphere is far brighter than 1 (GGX's peak at roughness 0.2 is about 200 per
+// steradian). A shading that does not exist is refused with the choices.
+TEST(Cli, PbrShadingWritesUnclampedLinearRadianceToExr) {
+  const std::string folder = scratchFolder();
+  const std::string out = folder + "/metal.exr";
+  CliRun run =
+      runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--mesh"),
+              QStringLiteral("sphere"), QStringLiteral("--shading"), QStringLiteral("pbr"),
+              QStringLiteral("--set"), QStringLiteral("metallic=1"), QStringLiteral("--set"),
+              QStringLiteral("roughness=0.2"), QStringLiteral("--size"), QStringLiteral("128x128"),
+              QStringLiteral("--out"), q(out)});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  core::Result<core::Image> image = core::loadImage(out);
+  ASSERT_TRUE(image.ok()) << image.error();
+  float brightest = 0.0f;
+  for (int y = 0; y < image->height(); ++y)
+    for (int x = 0; x < image->width(); ++x)
+      brightest = std::max(brightest, image->at(x, y, 0));
+  EXPECT_GT(brightest, 4.0f);
+
+  run = runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--shading"),
+                QStringLiteral("glossy"), QStringLiteral("--out"), q(folder + "/x.png")});
+  EXPECT_EQ(run.exitCode, 2) << run.err;
+  EXPECT_NE(run.err.find("pbr"), std::string::npos) << run.err;
+}
+
 TEST(Cli, ErrorViewPrintsTheErrorAgainstTheExactTrace) {
   const std::string out = scratchFolder() + "/error.png";
   CliRun run = runCli({QStringLiteral("render"), q(samplePreset("tiles")), QStringLiteral("--view"),

@@ -72,6 +72,30 @@ TEST(EngineConversion, MasksTakeTheMaterialsConstantRoughnessAndNeutralValues) {
   EXPECT_FALSE(packEngineMasks(bare.material, "orm").has_value());
 }
 
+// Under pbr shading the masks carry the metallic constant and the roughness factor baked into
+// the roughness map (engines' mask maps have no factor).
+TEST(EngineConversion, PbrMasksCarryMetallicAndTheRoughnessFactor) {
+  Preset preset = syntheticPreset();
+  preset.material.setParameter(ParamId::Shading, double(int(ShadingModel::Pbr)));
+  preset.material.setParameter(ParamId::Metallic, 0.7);
+  preset.material.setParameter(ParamId::Roughness, 0.4);
+  std::optional<Image> orm = packEngineMasks(preset.material, "orm");
+  ASSERT_TRUE(orm.has_value());
+  EXPECT_LT(worstTexel(*orm, 1, [](int, int) { return 0.4; }), 1e-5);
+  EXPECT_LT(worstTexel(*orm, 2, [](int, int) { return 0.7; }), 1e-5);
+  auto roughness =
+      std::make_shared<Image>(preset.material.image(MapSlot::AmbientOcclusion)->width(),
+                              preset.material.image(MapSlot::AmbientOcclusion)->height(), 1);
+  for (std::size_t i = 0; i < roughness->valueCount(); ++i)
+    roughness->data()[i] = float(i % 7) / 6.0f;
+  preset.material.setMap(MapSlot::Roughness, roughness);
+  const std::optional<Image> mask = packEngineMasks(preset.material, "unity-mask");
+  ASSERT_TRUE(mask.has_value());
+  EXPECT_LT(worstTexel(*mask, 0, [](int, int) { return 0.7; }), 1e-5);
+  EXPECT_LT(worstTexel(*mask, 3, [&](int x, int y) { return 1.0 - 0.4 * roughness->at(x, y, 0); }),
+            1e-5);
+}
+
 TEST(EngineConversion, GuidsAreStableHexAndDistinct) {
   const std::string a = stableGuid("/x/bricks_Normal.png");
   EXPECT_EQ(a.size(), 32u);

@@ -372,6 +372,52 @@ TEST(GodotExport, TresParsesBackWithHeightmapSettingsConverted) {
   EXPECT_TRUE(exported->notes.size() >= 1);  // Godot's offset-limited deep parallax
 }
 
+// Under pbr shading the exports carry the metallic and roughness the viewport shows, not the
+// Blinn-Phong equivalent; with a roughness map, as factor x map (glTF and Godot multiply).
+TEST(GltfExport, PbrShadingExportsItsMetallicAndRoughness) {
+  Preset preset = syntheticPreset();
+  preset.material.setParameter(ParamId::Shading, double(int(ShadingModel::Pbr)));
+  preset.material.setParameter(ParamId::Metallic, 0.7);
+  preset.material.setParameter(ParamId::Roughness, 0.35);
+  Result<std::string> gltfPath = exportGltf(preset, makePlane(2.0f, 1), freshFolder("gltf-pbr"));
+  ASSERT_TRUE(gltfPath.ok()) << gltfPath.error();
+  const QJsonObject pbr = readJson(gltfPath.value())["materials"]
+                              .toArray()[0]
+                              .toObject()["pbrMetallicRoughness"]
+                              .toObject();
+  EXPECT_DOUBLE_EQ(pbr["metallicFactor"].toDouble(), 0.7);
+  EXPECT_DOUBLE_EQ(pbr["roughnessFactor"].toDouble(), 0.35);
+
+  Result<EngineExportResult> godot = exportGodot(preset, freshFolder("godot-pbr"));
+  ASSERT_TRUE(godot.ok()) << godot.error();
+  const GodotResource tres = parseTres(godot->mainPath);
+  EXPECT_DOUBLE_EQ(std::stod(tres.properties.at("metallic")), 0.7);
+  EXPECT_DOUBLE_EQ(std::stod(tres.properties.at("roughness")), 0.35);
+
+  // A roughness map: the texture carries it (blue 1 lets metallicFactor through), the factor
+  // multiplies it.
+  auto roughnessMap = std::make_shared<Image>(4, 4, 1);
+  for (int i = 0; i < 16; ++i)
+    roughnessMap->data()[i] = float(i) / 15.0f;
+  preset.material.setMap(MapSlot::Roughness, roughnessMap);
+  const std::string folder = freshFolder("gltf-pbr-map");
+  gltfPath = exportGltf(preset, makePlane(2.0f, 1), folder);
+  ASSERT_TRUE(gltfPath.ok()) << gltfPath.error();
+  const QJsonObject gltf = readJson(gltfPath.value());
+  const QJsonObject withMap =
+      gltf["materials"].toArray()[0].toObject()["pbrMetallicRoughness"].toObject();
+  EXPECT_DOUBLE_EQ(withMap["roughnessFactor"].toDouble(), 0.35);
+  const int texture = withMap["metallicRoughnessTexture"].toObject()["index"].toInt();
+  const int source = gltf["textures"].toArray()[texture].toObject()["source"].toInt();
+  Result<Image> packed = loadImage(
+      folder + "/" + gltf["images"].toArray()[source].toObject()["uri"].toString().toStdString());
+  ASSERT_TRUE(packed.ok()) << packed.error();
+  for (int i = 0; i < 16; ++i) {
+    EXPECT_NEAR(packed->at(i % 4, i / 4, 1), roughnessMap->data()[i], 0.5f / 255.0f);
+    EXPECT_EQ(packed->at(i % 4, i / 4, 2), 1.0f);
+  }
+}
+
 TEST(GodotExport, DepthMapsFlipAndSimpleParallaxIsNotDeep) {
   Preset preset = syntheticPreset();
   preset.material.setTechnique(Technique::ParallaxLimited);

@@ -65,7 +65,7 @@ TEST(Parameters, EveryUniformInTheTableIsDeclaredInTheShaderWithItsType) {
 
 TEST(Parameters, UseFollowsTechniqueAndShadowMode) {
   const auto inUse = [](ParamId id, Technique technique, ShadowMode shadows) {
-    return parameterInUse(parameterSpec(id), technique, shadows);
+    return parameterInUse(parameterSpec(id), technique, shadows, ShadingModel::Classic);
   };
   EXPECT_FALSE(inUse(ParamId::MinSamples, Technique::Parallax, ShadowMode::Soft));
   EXPECT_TRUE(inUse(ParamId::MaxSamples, Technique::Pom, ShadowMode::Off));
@@ -82,6 +82,19 @@ TEST(Parameters, UseFollowsTechniqueAndShadowMode) {
   EXPECT_FALSE(inUse(ParamId::DepthOffset, Technique::Displacement, ShadowMode::Off));
   EXPECT_FALSE(inUse(ParamId::LodFade, Technique::Displacement, ShadowMode::Off));
   EXPECT_TRUE(inUse(ParamId::DepthOffset, Technique::Normal, ShadowMode::Off));
+}
+
+TEST(Parameters, EachShadingModelUsesItsOwnTerms) {
+  const auto inUse = [](ParamId id, ShadingModel shading) {
+    return parameterInUse(parameterSpec(id), Technique::Pom, ShadowMode::Soft, shading);
+  };
+  EXPECT_TRUE(inUse(ParamId::Shininess, ShadingModel::Classic));
+  EXPECT_FALSE(inUse(ParamId::Shininess, ShadingModel::Pbr));
+  EXPECT_FALSE(inUse(ParamId::Specular, ShadingModel::Pbr));
+  EXPECT_TRUE(inUse(ParamId::Roughness, ShadingModel::Pbr));
+  EXPECT_TRUE(inUse(ParamId::Metallic, ShadingModel::Pbr));
+  EXPECT_FALSE(inUse(ParamId::Metallic, ShadingModel::Classic));
+  EXPECT_TRUE(inUse(ParamId::Shading, ShadingModel::Classic));
 }
 
 TEST(Parameters, ParsesNumbersAndBooleansAndRejectsNonsense) {

@@ -87,6 +87,10 @@ TEST_F(ViewportControls, EveryParameterChangesTheFrame) {
     document()->setTechnique(spec.use == core::ParamUse::Tessellation
                                  ? core::Technique::Displacement
                                  : core::Technique::Relief);
+    // Metallic and roughness are pbr shading's; the others are seen under classic.
+    document()->setParameter(ParamId::Shading, double(int(spec.use == core::ParamUse::Pbr
+                                                              ? core::ShadingModel::Pbr
+                                                              : core::ShadingModel::Classic)));
     // Write-displaced-depth changes only depth: watch it in the depth view.
     viewport()->setDebugView(spec.id == ParamId::DepthOffset ? core::DebugView::Depth
                                                              : core::DebugView::Shading);

@@ -75,7 +75,7 @@ QWidget* ParameterPanel::createEditor(const core::ParameterSpec& spec) {
 }
 
 void ParameterPanel::showValue(core::ParamId id) {
-  if (id == core::ParamId::ShadowMode)
+  if (id == core::ParamId::ShadowMode || id == core::ParamId::Shading)
     updateRelevance();
   setOptionEditorValue(m_editors[std::size_t(id)], m_document->material().parameter(id));
 }
@@ -93,8 +93,9 @@ void ParameterPanel::showAll() {
 void ParameterPanel::updateRelevance() {
   const core::Material& material = m_document->material();
   const auto shadows = core::ShadowMode(int(material.parameter(core::ParamId::ShadowMode)));
+  const auto shading = core::ShadingModel(int(material.parameter(core::ParamId::Shading)));
   for (const core::ParameterSpec& spec : core::allParameters()) {
-    const bool on = core::parameterInUse(spec, material.technique(), shadows);
+    const bool on = core::parameterInUse(spec, material.technique(), shadows, shading);
     m_editors[std::size_t(spec.id)]->setEnabled(on);
     m_labels[std::size_t(spec.id)]->setEnabled(on);
   }
