@@ -8,6 +8,9 @@
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/MainWindow.h"
 
+#include <QSlider>
+#include <QStyle>
+#include <QStyleOptionSlider>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -30,6 +33,19 @@ class MainWindowFixture : public ::testing::Test {
 
   ui::MaterialDocument* document() const { return m_window->document(); }
   ui::ViewportWidget* viewport() const { return m_window->viewport(); }
+  // The centre of a slider's handle, where a user presses to drag it.
+  static QPoint sliderHandle(QSlider* slider) {
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = slider->sliderPosition();
+    option.sliderValue = slider->value();
+    return slider->style()
+        ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
+        .center();
+  }
   // The viewport's frame as 8-bit RGBA values 0..1.
   core::Image grabbed() const { return renderer::fromQImage(viewport()->grabFramebuffer()); }
 

@@ -15,8 +15,6 @@
 #include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
-#include <QStyle>
-#include <QStyleOptionSlider>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -91,20 +89,6 @@ TEST(AdaptiveResolution, RisesOnlyWithRoomForTwoStepsAndFallsAtOnce) {
 class InteractiveResolution : public MainWindowFixture {
  protected:
   void SetUp() override { openWindow(1000, 700, samplePreset("cobblestones")); }
-
-  // The centre of a parameter slider's handle.
-  QPoint handleOf(QSlider* slider) {
-    QStyleOptionSlider option;
-    option.initFrom(slider);
-    option.orientation = slider->orientation();
-    option.minimum = slider->minimum();
-    option.maximum = slider->maximum();
-    option.sliderPosition = slider->sliderPosition();
-    option.sliderValue = slider->value();
-    return slider->style()
-        ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
-        .center();
-  }
 };
 
 // A budget no frame can meet makes every frame of the drag a reduced one on any GL; once the
@@ -117,7 +101,7 @@ TEST_F(InteractiveResolution, DraggingASliderDrawsReducedFramesThenAFullOneWhenT
       m_window->parameterPanel()->editor(core::ParamId::HeightScale));
   ASSERT_NE(scale, nullptr);
   QSlider* slider = scale->slider();
-  const QPoint handle = handleOf(slider);
+  const QPoint handle = sliderHandle(slider);
   const QPoint end = handle + QPoint(5 * slider->width() / 16, 0);
   QTest::mousePress(slider, Qt::LeftButton, {}, handle);
   for (int step = 1; step <= 4; ++step) {

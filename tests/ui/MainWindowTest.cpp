@@ -17,8 +17,6 @@
 #include <QCheckBox>
 #include <QLabel>
 #include <QSlider>
-#include <QStyle>
-#include <QStyleOptionSlider>
 #include <QTest>
 #include <QUndoStack>
 
@@ -61,17 +59,7 @@ TEST_F(MainWindowTest, MovingASliderChangesTheFrameAndUndoRestoresIt) {
 
   // Drag the slider handle as a user would: press on the handle, move in steps, release.
   QSlider* slider = tiling->slider();
-  QStyleOptionSlider option;
-  option.initFrom(slider);
-  option.orientation = slider->orientation();
-  option.minimum = slider->minimum();
-  option.maximum = slider->maximum();
-  option.sliderPosition = slider->sliderPosition();
-  option.sliderValue = slider->value();
-  const QPoint handle =
-      slider->style()
-          ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
-          .center();
+  const QPoint handle = sliderHandle(slider);
   QTest::mousePress(slider, Qt::LeftButton, {}, handle);
   for (int step = 1; step <= 5; ++step) {
     QTest::mouseMove(slider, handle + QPoint(step * slider->width() / 12, 0));
