@@ -296,6 +296,8 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
   program.setUniformValue("uLightDirection", toQt(view.light.direction()));
   program.setUniformValue("uLightColor", toQt(view.light.color * view.light.intensity));
   program.setUniformValue("uAmbient", view.light.ambient);
+  program.setUniformValue("uExposure", view.display.exposureScale());
+  program.setUniformValue("uToneMapper", int(view.display.toneMapper));
   program.setUniformValue("uViewportSize", QVector2D(float(width), float(height)));
   program.setUniformValue("uWorldPerUv", m_meshWorldPerUv);
   const float radius = m_meshBounds.sphereRadius;

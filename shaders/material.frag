@@ -13,6 +13,7 @@
 #include "include/normal_mapping.glsl"
 #include "include/lighting.glsl"
 #include "include/pbr.glsl"
+#include "include/display.glsl"
 #include "include/displaced_position.glsl"
 #include "include/heatmap.glsl"
 #include "include/color.glsl"
@@ -106,8 +107,9 @@ void main() {
 #else
   vec3 radiance = shadeBlinnPhong(surface, L, V, shadow);
 #endif
-  // Float output: the linear radiance, unclamped (what --format exr measures).
-  fragColor = dataOutput(radiance, linearToSrgb(radiance));
+  // Float output: the linear radiance, unclamped (what --format exr measures), before the
+  // display transform.
+  fragColor = dataOutput(radiance, linearToSrgb(displayTransform(radiance)));
 #elif DEBUG_VIEW == VIEW_HEIGHT
   fragColor = dataOutput(vec3(visible.height), vec3(visible.height));
 #elif DEBUG_VIEW == VIEW_NORMAL

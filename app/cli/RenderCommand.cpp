@@ -67,6 +67,15 @@ CliOptions renderOptions() {
        {}},
       {QStringLiteral("light-yaw"), degrees, QStringLiteral("Light azimuth in degrees."), {}},
       {QStringLiteral("light-pitch"), degrees, QStringLiteral("Light elevation in degrees."), {}},
+      {QStringLiteral("exposure"),
+       QStringLiteral("EV"),
+       QStringLiteral("Exposure of the shading view in stops (-10..10); +1 doubles it."),
+       {}},
+      {QStringLiteral("tonemap"),
+       QStringLiteral("name"),
+       QStringLiteral("none (clip at 1) or neutral (Khronos PBR Neutral). EXR output is the "
+                      "radiance before exposure and tone mapping."),
+       {}},
       {QStringLiteral("set"),
        QStringLiteral("name=value"),
        QStringLiteral("Set a material parameter (repeatable)."),
@@ -354,13 +363,32 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
     camera = *request.presetView.camera;
   if (request.presetView.light)
     light = *request.presetView.light;
+  core::DisplayTransform& display = request.frame.view.display;
+  if (request.presetView.display)
+    display = *request.presetView.display;
   const auto yaw = numberOption(parser, QStringLiteral("yaw"), camera.yawDeg);
   const auto pitch = numberOption(parser, QStringLiteral("pitch"), camera.pitchDeg);
   const auto distance = numberOption(parser, QStringLiteral("distance"), 0.0);
   const auto lightYaw = numberOption(parser, QStringLiteral("light-yaw"), light.azimuthDeg);
   const auto lightPitch = numberOption(parser, QStringLiteral("light-pitch"), light.elevationDeg);
-  if (!yaw || !pitch || !distance || !lightYaw || !lightPitch)
+  const auto exposure = numberOption(parser, QStringLiteral("exposure"), display.exposureEv);
+  if (!yaw || !pitch || !distance || !lightYaw || !lightPitch || !exposure)
     return kExitUsage;
+  if (*exposure < core::DisplayTransform::kMinExposureEv ||
+      *exposure > core::DisplayTransform::kMaxExposureEv) {
+    printError(QStringLiteral("--exposure must be within -10..10 stops"));
+    return kExitUsage;
+  }
+  display.exposureEv = float(*exposure);
+  if (parser.isSet(QStringLiteral("tonemap"))) {
+    const QString name = parser.value(QStringLiteral("tonemap"));
+    const std::optional<core::ToneMapper> mapper = core::findToneMapper(name.toStdString());
+    if (!mapper) {
+      printError(QStringLiteral("--tonemap %1: expected none or neutral").arg(name));
+      return kExitUsage;
+    }
+    display.toneMapper = *mapper;
+  }
   if (*pitch < core::OrbitCamera::kMinPitchDeg || *pitch > core::OrbitCamera::kMaxPitchDeg ||
       (parser.isSet(QStringLiteral("distance")) && *distance <= 0.0) || *lightPitch < -90.0 ||
       *lightPitch > 90.0) {

@@ -231,6 +231,24 @@ void readView(const QJsonObject& object, const std::string& path, ViewState& vie
       result.ambient = float(*v);
     view.light = result;
   }
+  if (object.contains(QStringLiteral("display"))) {
+    const QJsonObject display = object.value(QStringLiteral("display")).toObject();
+    DisplayTransform result;
+    if (auto v = readNumber(display.value(QStringLiteral("exposure")), "view.display.exposure",
+                            DisplayTransform::kMinExposureEv, DisplayTransform::kMaxExposureEv,
+                            problems))
+      result.exposureEv = float(*v);
+    if (display.contains(QStringLiteral("toneMapping"))) {
+      const std::string name =
+          display.value(QStringLiteral("toneMapping")).toString().toStdString();
+      if (const std::optional<ToneMapper> mapper = findToneMapper(name))
+        result.toneMapper = *mapper;
+      else
+        problems.add("view.display.toneMapping '" + name +
+                     "' is not one of none, neutral; none used");
+    }
+    view.display = result;
+  }
 }
 
 // Brings an older file's JSON to the current version. Version 1 has no compression choices
@@ -423,6 +441,14 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
                             {QStringLiteral("color"), toJson(l.color)},
                             {QStringLiteral("intensity"), tidy(l.intensity)},
                             {QStringLiteral("ambient"), tidy(l.ambient)}});
+  }
+  if (preset.view.display) {
+    const DisplayTransform& d = *preset.view.display;
+    view.insert(QStringLiteral("display"),
+                QJsonObject{{QStringLiteral("exposure"), tidy(d.exposureEv)},
+                            {QStringLiteral("toneMapping"),
+                             QString::fromUtf8(toneMapperName(d.toneMapper).data(),
+                                               qsizetype(toneMapperName(d.toneMapper).size()))}});
   }
   if (view.isEmpty()) {
     root.remove(QStringLiteral("view"));

@@ -350,6 +350,31 @@ TEST(Cli, PbrShadingWritesUnclampedLinearRadianceToExr) {
                 QStringLiteral("glossy"), QStringLiteral("--out"), q(folder + "/x.png")});
   EXPECT_EQ(run.exitCode, 2) << run.err;
   EXPECT_NE(run.err.find("pbr"), std::string::npos) << run.err;
+  run = runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--tonemap"),
+                QStringLiteral("filmic"), QStringLiteral("--out"), q(folder + "/x.png")});
+  EXPECT_EQ(run.exitCode, 2) << run.err;
+  EXPECT_NE(run.err.find("neutral"), std::string::npos) << run.err;
+  run = runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--exposure"),
+                QStringLiteral("12"), QStringLiteral("--out"), q(folder + "/x.png")});
+  EXPECT_EQ(run.exitCode, 2) << run.err;
+  // Exposure and tone mapping change the PNG, never the EXR (radiance before them).
+  const auto renderWith = [&](const QString& target, const QStringList& extra) {
+    return runCli(QStringList{QStringLiteral("render"), q(samplePreset("bricks")),
+                              QStringLiteral("--size"), QStringLiteral("64x64"),
+                              QStringLiteral("--out"), target} +
+                  extra);
+  };
+  const QStringList display = {QStringLiteral("--exposure"), QStringLiteral("1.5"),
+                               QStringLiteral("--tonemap"), QStringLiteral("neutral")};
+  ASSERT_EQ(renderWith(q(folder + "/plain.png"), {}).exitCode, 0);
+  ASSERT_EQ(renderWith(q(folder + "/exposed.png"), display).exitCode, 0);
+  ASSERT_EQ(renderWith(q(folder + "/plain.exr"), {}).exitCode, 0);
+  ASSERT_EQ(renderWith(q(folder + "/exposed.exr"), display).exitCode, 0);
+  const core::Image plainPng = core::loadImage(folder + "/plain.png").value();
+  const core::Image exposedPng = core::loadImage(folder + "/exposed.png").value();
+  EXPECT_FALSE(plainPng == exposedPng);
+  EXPECT_TRUE(core::loadImage(folder + "/plain.exr").value() ==
+              core::loadImage(folder + "/exposed.exr").value());
 }
 
 TEST(Cli, ErrorViewPrintsTheErrorAgainstTheExactTrace) {

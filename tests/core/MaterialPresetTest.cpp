@@ -73,6 +73,7 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   light.azimuthDeg = 210.0f;
   light.color = glm::vec3(1.0f, 0.5f, 0.25f);
   preset.view.light = light;
+  preset.view.display = DisplayTransform{1.5f, ToneMapper::PbrNeutral};
   preset.view.mesh = "torus";
   // Keys from a future tool, at every level.
   preset.preserved.insert(QStringLiteral("pipelineTag"), QStringLiteral("hero-asset"));
@@ -96,6 +97,7 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   EXPECT_EQ(again.view.camera->yawDeg, -40.0f);
   EXPECT_EQ(again.view.camera->target, camera.target);
   EXPECT_EQ(again.view.light->color, light.color);
+  EXPECT_EQ(again.view.display, preset.view.display);
   EXPECT_EQ(again.view.mesh, "torus");
   for (MapSlot slot : kAllMapSlots) {
     ASSERT_EQ(again.material.hasMap(slot), preset.material.hasMap(slot));
@@ -161,7 +163,8 @@ TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
                 " \"parameters\": {\"tiling\": 500, \"specular\": \"shiny\", \"bogus\": 1,"
                 "                  \"heightScale\": 1e300, \"normalYDown\": 3},"
                 " \"view\": {\"camera\": {\"pitch\": \"high\", \"distance\": -4},"
-                "            \"light\": {\"color\": [1, 2]}}}");
+                "            \"light\": {\"color\": [1, 2]},"
+                "            \"display\": {\"exposure\": 40, \"toneMapping\": \"filmic\"}}}");
   Result<LoadedPreset> loaded = loadPreset(path);
   ASSERT_TRUE(loaded.ok()) << loaded.error();
   const Material& material = loaded->preset.material;
@@ -176,7 +179,8 @@ TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
   }
   for (const char* mention :
        {"missing_normal.png", "warp-drive", "tiling", "specular", "bogus", "heightScale",
-        "normalYDown", "zip", "view.camera.pitch", "view.camera.distance", "view.light.color"}) {
+        "normalYDown", "zip", "view.camera.pitch", "view.camera.distance", "view.light.color",
+        "view.display.exposure", "filmic"}) {
     EXPECT_NE(all.find(mention), std::string::npos) << mention << " not in:\n" << all;
   }
 }

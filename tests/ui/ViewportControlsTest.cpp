@@ -142,6 +142,16 @@ TEST_F(ViewportControls, LightControlsMoveTheLight) {
   before = after;
   after = grabbed();
   EXPECT_TRUE(frameChanged(before, after));
+  light->exposureBox()->setValue(1.0);
+  before = after;
+  after = grabbed();
+  EXPECT_TRUE(frameChanged(before, after));
+  light->toneMapperBox()->setCurrentIndex(1);
+  EXPECT_EQ(viewport()->view().display.toneMapper, core::ToneMapper::PbrNeutral);
+  before = after;
+  after = grabbed();
+  EXPECT_TRUE(frameChanged(before, after));
+  EXPECT_EQ(viewport()->viewState().display->exposureEv, 1.0f);  // presets save it
   // Ctrl+drag in the viewport moves the same light, and the panel follows.
   const int azimuth = light->azimuthSlider()->value();
   const QPoint centre = viewport()->rect().center();

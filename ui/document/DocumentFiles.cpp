@@ -95,7 +95,7 @@ bool DocumentFiles::newDocument() {
     return false;
   m_document->reset(core::Material(), QString());
   m_recovery->clear();
-  showView({std::nullopt, std::nullopt, settings::defaultMesh().toStdString()});
+  showView({std::nullopt, std::nullopt, settings::defaultMesh().toStdString(), std::nullopt});
   Q_EMIT statusMessage(tr("New material: load or generate maps to begin"), 5000);
   return true;
 }

@@ -5,6 +5,7 @@
 #include "ui/viewport/ViewportWidget.h"
 
 #include <QColorDialog>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QPushButton>
@@ -38,7 +39,9 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
       m_elevation(new QSlider(Qt::Horizontal)),
       m_intensity(new QDoubleSpinBox),
       m_ambient(new QDoubleSpinBox),
-      m_color(new QPushButton) {
+      m_color(new QPushButton),
+      m_exposure(new QDoubleSpinBox),
+      m_toneMapper(new QComboBox) {
   auto* form = new QFormLayout(this);
   m_azimuth->setRange(0, 359);
   m_azimuth->setToolTip(
@@ -52,20 +55,42 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   m_ambient->setRange(0.0, 1.0);
   m_ambient->setSingleStep(0.02);
   m_ambient->setToolTip(
-      tr("Light without direction, as a fraction of the colour map; scaled by "
-         "the AO map."));
+      tr("Light without direction, scaled by the AO map. Classic shading: a fraction of the "
+         "colour map. PBR shading: the radiance of a uniform white environment."));
+  m_exposure->setRange(core::DisplayTransform::kMinExposureEv,
+                       core::DisplayTransform::kMaxExposureEv);
+  m_exposure->setSingleStep(0.5);
+  m_exposure->setDecimals(1);
+  m_exposure->setSuffix(tr(" EV"));
+  m_exposure->setToolTip(tr("Exposure of the shaded view in stops: +1 doubles the brightness."));
+  m_toneMapper->addItem(tr("None (clip)"), QStringLiteral("none"));
+  m_toneMapper->addItem(tr("Khronos PBR Neutral"), QStringLiteral("neutral"));
+  m_toneMapper->setToolTip(
+      tr("How radiance above 1 is shown. None clips it. Khronos PBR Neutral keeps colours below "
+         "0.76 as they are and rolls highlights off smoothly toward white."));
   m_color->setToolTip(tr("Colour of the light."));
   form->addRow(tr("Azimuth"), m_azimuth);
   form->addRow(tr("Elevation"), m_elevation);
   form->addRow(tr("Colour"), m_color);
   form->addRow(tr("Intensity"), m_intensity);
   form->addRow(tr("Ambient"), m_ambient);
+  form->addRow(tr("Exposure"), m_exposure);
+  form->addRow(tr("Tone mapping"), m_toneMapper);
 
   connect(m_azimuth, &QSlider::valueChanged, this, &LightPanel::applyToViewport);
   connect(m_elevation, &QSlider::valueChanged, this, &LightPanel::applyToViewport);
   connect(m_intensity, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
   connect(m_ambient, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
   connect(m_color, &QPushButton::clicked, this, &LightPanel::chooseColor);
+  const auto applyDisplay = [this] {
+    core::DisplayTransform display;
+    display.exposureEv = float(m_exposure->value());
+    display.toneMapper = core::findToneMapper(m_toneMapper->currentData().toString().toStdString())
+                             .value_or(core::ToneMapper::None);
+    m_viewport->setDisplayTransform(display);
+  };
+  connect(m_exposure, &QDoubleSpinBox::valueChanged, this, applyDisplay);
+  connect(m_toneMapper, &QComboBox::currentIndexChanged, this, applyDisplay);
   connect(viewport, &ViewportWidget::lightChanged, this, &LightPanel::showLight);
   showLight();
 }
@@ -73,11 +98,17 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
 void LightPanel::showLight() {
   const core::DirectionalLight& light = m_viewport->view().light;
   const QSignalBlocker blockAzimuth(m_azimuth), blockElevation(m_elevation),
-      blockIntensity(m_intensity), blockAmbient(m_ambient);
+      blockIntensity(m_intensity), blockAmbient(m_ambient), blockExposure(m_exposure),
+      blockToneMapper(m_toneMapper);
   m_azimuth->setValue(int(std::lround(light.azimuthDeg)) % 360);
   m_elevation->setValue(int(std::lround(light.elevationDeg)));
   m_intensity->setValue(light.intensity);
   m_ambient->setValue(light.ambient);
+  const core::DisplayTransform& display = m_viewport->view().display;
+  m_exposure->setValue(display.exposureEv);
+  const std::string_view mapper = core::toneMapperName(display.toneMapper);
+  m_toneMapper->setCurrentIndex(
+      m_toneMapper->findData(QString::fromUtf8(mapper.data(), qsizetype(mapper.size()))));
   const QColor color = toQColor(light.color);
   m_color->setText(color.name());
   m_color->setStyleSheet(QStringLiteral("background-color: %1; color: %2")

@@ -1,11 +1,13 @@
-// LightPanel: the directional light's azimuth and elevation, colour, intensity and ambient.
-// Kept in step with the viewport, where Ctrl+drag moves the same light.
+// LightPanel: the directional light's azimuth and elevation, colour, intensity and ambient, and
+// the display's exposure and tone mapping. Kept in step with the viewport, where Ctrl+drag moves
+// the same light.
 #pragma once
 
 #include "ui/Forward.h"
 
 #include <QWidget>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QPushButton;
 class QSlider;
@@ -23,6 +25,8 @@ class LightPanel : public QWidget {
   QDoubleSpinBox* intensityBox() const { return m_intensity; }
   QDoubleSpinBox* ambientBox() const { return m_ambient; }
   QPushButton* colorButton() const { return m_color; }
+  QDoubleSpinBox* exposureBox() const { return m_exposure; }
+  QComboBox* toneMapperBox() const { return m_toneMapper; }
 
  public Q_SLOTS:
   void showLight();  // reads the viewport's light into the controls
@@ -37,6 +41,8 @@ class LightPanel : public QWidget {
   QDoubleSpinBox* m_intensity;
   QDoubleSpinBox* m_ambient;
   QPushButton* m_color;
+  QDoubleSpinBox* m_exposure;
+  QComboBox* m_toneMapper;
 };
 
 }  // namespace relief::ui::inline panels

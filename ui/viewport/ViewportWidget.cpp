@@ -101,6 +101,12 @@ void ViewportWidget::setLight(const core::DirectionalLight& light) {
   Q_EMIT lightChanged();
 }
 
+void ViewportWidget::setDisplayTransform(const core::DisplayTransform& display) {
+  m_frame.view.display = display;
+  changed();
+  Q_EMIT lightChanged();
+}
+
 void ViewportWidget::setCamera(const core::OrbitCamera& camera) {
   m_frame.view.camera = camera;
   m_framePending = false;
@@ -135,7 +141,8 @@ core::Result<QString> ViewportWidget::showMesh(const QString& nameOrPath) {
 }
 
 core::ViewState ViewportWidget::viewState() const {
-  return {m_frame.view.camera, m_frame.view.light, m_meshSource.toStdString()};
+  return {m_frame.view.camera, m_frame.view.light, m_meshSource.toStdString(),
+          m_frame.view.display};
 }
 
 core::Status ViewportWidget::showViewState(const core::ViewState& state) {
@@ -151,6 +158,8 @@ core::Status ViewportWidget::showViewState(const core::ViewState& state) {
     frameMesh();
   if (state.light)
     setLight(*state.light);
+  if (state.display)
+    setDisplayTransform(*state.display);
   return meshShown;
 }
 

@@ -42,6 +42,8 @@ class ViewportWidget : public QOpenGLWidget {
   const renderer::RenderView& view() const { return m_frame.view; }
   void setView(const renderer::RenderView& view);
   void setLight(const core::DirectionalLight& light);  // emits lightChanged
+  // Exposure and tone mapping of the shaded view; emits lightChanged (the Light panel shows it).
+  void setDisplayTransform(const core::DisplayTransform& display);
   // Places the camera as given, instead of framing the mesh (a preset's saved view).
   void setCamera(const core::OrbitCamera& camera);
   const core::Mesh& mesh() const { return m_mesh; }

@@ -1,0 +1,41 @@
+// DisplayTransform: how scene radiance becomes a display colour: an exposure in EV (stops: each
+// doubles the radiance), then a tone mapper, then the sRGB encoding. The float outputs (EXR,
+// the error view) stay the scene radiance before it.
+//
+// Tone mappers: `none` clips at 1 (the look classic shading was tuned for); `neutral` is the
+// Khronos PBR Neutral tone mapper (Khronos Group, 2024, github.com/KhronosGroup/ToneMapping,
+// PBR_Neutral/README.md), made for product and material views: below 0.76 it only lifts the
+// darkest channel's floor (colours stay as authored), above it compresses highlights smoothly
+// toward 1 and desaturates them. The shader's version is shaders/include/display.glsl.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace relief::core::inline view {
+
+enum class ToneMapper { None, PbrNeutral };
+
+struct DisplayTransform {
+  static constexpr float kMinExposureEv = -10.0f;
+  static constexpr float kMaxExposureEv = 10.0f;
+  float exposureEv = 0.0f;
+  ToneMapper toneMapper = ToneMapper::None;
+
+  float exposureScale() const;  // 2^exposureEv
+  bool operator==(const DisplayTransform&) const = default;
+};
+
+std::span<const ToneMapper> allToneMappers();
+std::string_view toneMapperName(ToneMapper mapper);  // "none", "neutral"
+std::optional<ToneMapper> findToneMapper(std::string_view name);
+
+// Khronos PBR Neutral of a non-negative linear Rec. 709 colour: linear, in [0, 1].
+glm::vec3 pbrNeutral(const glm::vec3& color);
+// Exposure then the tone mapper (not the sRGB encoding), of linear radiance.
+glm::vec3 applyDisplayTransform(const DisplayTransform& transform, const glm::vec3& radiance);
+
+}  // namespace relief::core::inline view
