@@ -4,6 +4,9 @@
 // CPU clock (GL timer queries report nonsense on llvmpipe; PLATFORM.md), takes the median of
 // several runs and prints each row's ratio to `normal` for the same view, measured in the same run.
 //
+// A second table times the shading models (classic Blinn-Phong, pbr metallic-roughness) on the
+// same techniques and views.
+//
 // The quadtree's row includes nothing of building its pyramid (once per height map, not per
 // frame); the bench prints that build's time for a 4096x4096 map after the table.
 //
@@ -23,6 +26,7 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifndef RELIEF_SOURCE_DIR
@@ -145,6 +149,33 @@ int main(int argc, char* argv[]) {
   shadowed.setTechnique(core::Technique::Pom);
   shadowed.setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Soft));
   measure(shadowed, "8/32", "soft, 16");
+
+  // Shading models: the same technique and view under classic and pbr (issue 12: pbr at most
+  // 1.3x classic), measured in this run, interleaved so drift in the machine's speed hits both.
+  struct ShadingRow {
+    std::string label;
+    double classic[3];
+    double pbr[3];
+  };
+  std::vector<ShadingRow> shadingRows;
+  core::Material pomPlain = base;
+  pomPlain.setTechnique(core::Technique::Pom);
+  core::Material quadtree = base;
+  quadtree.setTechnique(core::Technique::Quadtree);
+  for (const auto& [label, material] : {std::pair<std::string, core::Material>{"normal", normal},
+                                        {"pom 8/32", pomPlain},
+                                        {"pom 8/32, soft shadows", shadowed},
+                                        {"quadtree", quadtree}}) {
+    ShadingRow row{label, {}, {}};
+    core::Material pbr = material;
+    pbr.setParameter(core::ParamId::Shading, double(int(core::ShadingModel::Pbr)));
+    for (int v = 0; v < 3; ++v) {
+      row.classic[v] = timeFrame(material, views[v]);
+      row.pbr[v] = timeFrame(pbr, views[v]);
+    }
+    shadingRows.push_back(row);
+    std::fprintf(stderr, ".");
+  }
   std::fprintf(stderr, "\n");
 
   std::printf(
@@ -165,6 +196,16 @@ int main(int argc, char* argv[]) {
                   row.milliseconds[v] / rows.front().milliseconds[v]);
     }
     std::printf(" %17.2f |\n", row.milliseconds[0] / row.milliseconds[2]);
+  }
+  std::printf(
+      "\n| shading: pbr / classic | head-on ms | 45 deg ms | grazing ms |\n"
+      "|---|---|---|---|\n");
+  for (const ShadingRow& row : shadingRows) {
+    std::printf("| %s |", row.label.c_str());
+    for (int v = 0; v < 3; ++v)
+      std::printf(" %.1f / %.1f (%.2fx) |", row.pbr[v], row.classic[v],
+                  row.pbr[v] / row.classic[v]);
+    std::printf("\n");
   }
   // The quadtree's pyramid for a 4096x4096 map, built in core (median of 5).
   {
