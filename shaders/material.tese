@@ -76,9 +76,14 @@ void main() {
   vec3 weights = gl_TessCoord;
   int corner = weights.x == 1.0 ? 0 : (weights.y == 1.0 ? 1 : (weights.z == 1.0 ? 2 : -1));
   if (corner >= 0) {  // a vertex of the mesh, exactly as the vertex stage left it
-    position = vIn[corner].worldPosition;
-    normal = vIn[corner].worldNormal;
-    uv = vIn[corner].uv;
+    // The index is clamped although the branch excludes -1: llvmpipe runs a branch for all of
+    // its SIMD lanes and does not mask indirect input loads, so lanes whose corner is -1 read
+    // vIn[-1], before its input buffer (an intermittent SEGV in its JIT code, seen under
+    // AddressSanitizer in the displacement tests).
+    int vertex = max(corner, 0);
+    position = vIn[vertex].worldPosition;
+    normal = vIn[vertex].worldNormal;
+    uv = vIn[vertex].uv;
   } else if (weights.x == 0.0 || weights.y == 0.0 || weights.z == 0.0) {
     // On the edge opposite the vertex whose weight is 0.
     EdgePoint point = weights.z == 0.0   ? edgePoint(0, 1, weights.x, weights.y)
