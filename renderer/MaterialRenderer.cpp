@@ -77,22 +77,14 @@ core::Status MaterialRenderer::initialize() {
 
 void MaterialRenderer::createSplitSumTable() {
   const core::Image table = core::makeSplitSumLut(kSplitSumSize, kSplitSumSamples);
-  std::vector<float> rg(std::size_t(kSplitSumSize) * kSplitSumSize * 2);
-  for (int row = 0; row < kSplitSumSize; ++row) {
-    for (int column = 0; column < kSplitSumSize; ++column) {
-      const float* texel = table.pixel(column, row);
-      float* out = &rg[(std::size_t(row) * kSplitSumSize + std::size_t(column)) * 2];
-      out[0] = texel[0];
-      out[1] = texel[1];
-    }
-  }
-  // Row 0 (smoothest) at t = 0: uploaded as is, no flip, unlike the maps.
+  // Row 0 (smoothest) at t = 0: uploaded as is, no flip, unlike the maps. The table's four
+  // channels go up whole (A and B in red and green): 16 KiB, not worth repacking.
   m_splitSumTable = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
-  m_splitSumTable->setFormat(QOpenGLTexture::RG32F);
+  m_splitSumTable->setFormat(QOpenGLTexture::RGBA32F);
   m_splitSumTable->setSize(kSplitSumSize, kSplitSumSize);
   m_splitSumTable->setMipLevels(1);
-  m_splitSumTable->allocateStorage(QOpenGLTexture::RG, QOpenGLTexture::Float32);
-  m_splitSumTable->setData(QOpenGLTexture::RG, QOpenGLTexture::Float32, rg.data());
+  m_splitSumTable->allocateStorage(QOpenGLTexture::RGBA, QOpenGLTexture::Float32);
+  m_splitSumTable->setData(QOpenGLTexture::RGBA, QOpenGLTexture::Float32, table.data());
   m_splitSumTable->setMinMagFilters(QOpenGLTexture::Linear, QOpenGLTexture::Linear);
   m_splitSumTable->setWrapMode(QOpenGLTexture::ClampToEdge);
 }

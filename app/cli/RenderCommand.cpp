@@ -73,8 +73,9 @@ CliOptions renderOptions() {
        {}},
       {QStringLiteral("tonemap"),
        QStringLiteral("name"),
-       QStringLiteral("none (clip at 1) or neutral (Khronos PBR Neutral). EXR output is the "
-                      "radiance before exposure and tone mapping."),
+       enumNames(core::allToneMappers(), core::toneMapperName) +
+           QStringLiteral(": none clips at 1, neutral is Khronos PBR Neutral. EXR output is "
+                          "the radiance before exposure and tone mapping."),
        {}},
       {QStringLiteral("set"),
        QStringLiteral("name=value"),
@@ -376,7 +377,9 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
     return kExitUsage;
   if (*exposure < core::DisplayTransform::kMinExposureEv ||
       *exposure > core::DisplayTransform::kMaxExposureEv) {
-    printError(QStringLiteral("--exposure must be within -10..10 stops"));
+    printError(QStringLiteral("--exposure must be within %1..%2 stops")
+                   .arg(core::DisplayTransform::kMinExposureEv)
+                   .arg(core::DisplayTransform::kMaxExposureEv));
     return kExitUsage;
   }
   display.exposureEv = float(*exposure);
@@ -384,7 +387,8 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
     const QString name = parser.value(QStringLiteral("tonemap"));
     const std::optional<core::ToneMapper> mapper = core::findToneMapper(name.toStdString());
     if (!mapper) {
-      printError(QStringLiteral("--tonemap %1: expected none or neutral").arg(name));
+      printError(QStringLiteral("--tonemap %1: expected one of %2")
+                     .arg(name, enumNames(core::allToneMappers(), core::toneMapperName)));
       return kExitUsage;
     }
     display.toneMapper = *mapper;

@@ -446,9 +446,7 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
     const DisplayTransform& d = *preset.view.display;
     view.insert(QStringLiteral("display"),
                 QJsonObject{{QStringLiteral("exposure"), tidy(d.exposureEv)},
-                            {QStringLiteral("toneMapping"),
-                             QString::fromUtf8(toneMapperName(d.toneMapper).data(),
-                                               qsizetype(toneMapperName(d.toneMapper).size()))}});
+                            {QStringLiteral("toneMapping"), qstr(toneMapperName(d.toneMapper))}});
   }
   if (view.isEmpty()) {
     root.remove(QStringLiteral("view"));

@@ -3,6 +3,7 @@
 
 #include "core/image/ColorSpace.h"
 #include "ui/viewport/ViewportWidget.h"
+#include "ui/window/QtText.h"
 
 #include <QColorDialog>
 #include <QComboBox>
@@ -106,9 +107,8 @@ void LightPanel::showLight() {
   m_ambient->setValue(light.ambient);
   const core::DisplayTransform& display = m_viewport->view().display;
   m_exposure->setValue(display.exposureEv);
-  const std::string_view mapper = core::toneMapperName(display.toneMapper);
   m_toneMapper->setCurrentIndex(
-      m_toneMapper->findData(QString::fromUtf8(mapper.data(), qsizetype(mapper.size()))));
+      m_toneMapper->findData(toQString(core::toneMapperName(display.toneMapper))));
   const QColor color = toQColor(light.color);
   m_color->setText(color.name());
   m_color->setStyleSheet(QStringLiteral("background-color: %1; color: %2")
