@@ -26,8 +26,9 @@ using core::MapSlot;
 using core::ParamId;
 
 constexpr int kFirstMapUnit = 0;
-constexpr int kPyramidUnit = kFirstMapUnit + int(core::kMapSlotCount);  // the quadtree's
-constexpr int kSplitSumUnit = kPyramidUnit + 1;                         // pbr shading's table
+constexpr int kPyramidUnit = kFirstMapUnit + int(core::kMapSlotCount);  // the exact tracers'
+constexpr int kConeMapUnit = kPyramidUnit + 1;                          // the cone technique's
+constexpr int kSplitSumUnit = kConeMapUnit + 1;                         // pbr shading's table
 // 32 x 32 entries of 4096 samples: the table varies smoothly, so 32 entries a side interpolate
 // well; 4096 samples keep grazing entries within 0.3% (core/shading tests). Built at start-up in
 // about 40 ms.
@@ -204,11 +205,15 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   for (MapSlot slot : core::kAllMapSlots) {
     m_textures.texture(material, slot).bind(unsigned(kFirstMapUnit + int(slot)));
   }
-  if (material.technique() == core::Technique::Quadtree) {
+  if (core::isExactTracing(material.technique())) {
     QOpenGLTexture& pyramid = m_textures.heightPyramid(material);
     pyramid.bind(unsigned(kPyramidUnit));
     program.setUniformValue("uHeightPyramid", kPyramidUnit);
     program.setUniformValue("uHeightPyramidLevels", pyramid.mipLevels());
+  }
+  if (material.technique() == core::Technique::Cone) {
+    m_textures.coneMap(material).bind(unsigned(kConeMapUnit));
+    program.setUniformValue("uConeMap", kConeMapUnit);
   }
   m_splitSumTable->bind(unsigned(kSplitSumUnit));
   program.setUniformValue("uSplitSumLut", kSplitSumUnit);

@@ -20,6 +20,8 @@ const char* techniqueDefine(core::Technique technique) {
       return "TECHNIQUE_RELIEF";
     case core::Technique::Quadtree:
       return "TECHNIQUE_QUADTREE";
+    case core::Technique::Cone:
+      return "TECHNIQUE_CONE";
     case core::Technique::Displacement:
       return "TECHNIQUE_DISPLACEMENT";
   }

@@ -3,6 +3,7 @@
 
 #include "core/compression/Compressor.h"
 #include "core/compression/MipChain.h"
+#include "core/tracing/ConeMap.h"
 #include "core/tracing/MaxMipPyramid.h"
 #include "renderer/CompressedUpload.h"
 
@@ -211,51 +212,97 @@ std::optional<bool> TextureCache::uploadedNatively(const core::Material& materia
   return m_uploads[Key{material.image(slot), slot}].native;
 }
 
-QOpenGLTexture& TextureCache::heightPyramid(const core::Material& material) {
+TextureCache::TraceKey TextureCache::traceKey(const core::Material& material) {
   const bool packed = material.parameterFlag(core::ParamId::HeightInNormalAlpha);
   const MapSlot slot = packed ? MapSlot::Normal : MapSlot::Height;
-  std::shared_ptr<const Image> image = material.map(slot).image;
-  const bool depth = material.parameterFlag(core::ParamId::HeightIsDepth);
   // An empty slot keys as null (kept while the slot stays empty) and reads the neutral texel.
-  const std::shared_ptr<const core::CompressedTexture>& compressed = material.map(slot).compressed;
-  PyramidEntry& entry = m_pyramids[PyramidKey{image.get(), compressed.get(), packed, depth}];
-  if (!image)
-    image = neutralImage(slot);
-  if (entry.texture)
-    return *entry.texture;
-  entry.image = image;
-  // The pyramid must bound what the shader fetches: a compression preview's decoded texels.
-  const Image* source = image.get();
-  core::Result<Image> decoded = core::makeError("");
+  return TraceKey{material.image(slot), material.map(slot).compressed.get(), packed,
+                  material.parameterFlag(core::ParamId::HeightIsDepth)};
+}
+
+TextureCache::TraceEntry& TextureCache::traceEntry(const TraceKey& key,
+                                                   const core::Material& material) {
+  TraceEntry& entry = m_traces[key];
+  if (!entry.image) {
+    const MapSlot slot = key.packed ? MapSlot::Normal : MapSlot::Height;
+    entry.image = material.map(slot).image ? material.map(slot).image : neutralImage(slot);
+    entry.compressed = material.map(slot).compressed;
+  }
+  return entry;
+}
+
+std::shared_ptr<const Image> TextureCache::TraceEntry::texels() const {
+  // What the shader fetches: a compression preview's decoded texels.
   if (compressed) {
-    decoded = core::decodeAsMap(*compressed, 0);
+    core::Result<Image> decoded = core::decodeAsMap(*compressed, 0);
     if (decoded)
-      source = &decoded.value();
+      return std::make_shared<const Image>(std::move(decoded.value()));
   }
-  core::MaxMipPyramid pyramid = core::buildMaxMipPyramid(*source, packed ? 3 : 0, depth);
-  if (packed) {
-    // The normal texture keeps 16 bits; a bound a rounding below its alpha could miss a hit.
-    for (core::MaxMipLevel& level : pyramid.levels) {
-      for (float& value : level.values)
-        value += 1.0f / 65535.0f;
-    }
-  }
+  return image;
+}
+
+namespace {
+
+// One level of floats, rows as the image stores them.
+struct FloatLevel {
+  int width;
+  int height;
+  const float* values;
+};
+
+// An R32F texture with one mip level per entry of `levels`, nearest filtering: the shaders read
+// them with texelFetch.
+std::unique_ptr<QOpenGLTexture> uploadFloatLevels(const std::vector<FloatLevel>& levels) {
   auto texture = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
-  texture->setSize(pyramid.levels[0].width, pyramid.levels[0].height);
-  texture->setMipLevels(int(pyramid.levels.size()));
-  texture->setMipMaxLevel(int(pyramid.levels.size()) - 1);
+  texture->setSize(levels[0].width, levels[0].height);
+  texture->setMipLevels(int(levels.size()));
+  texture->setMipMaxLevel(int(levels.size()) - 1);
   texture->setMinMagFilters(QOpenGLTexture::NearestMipMapNearest, QOpenGLTexture::Nearest);
   texture->setWrapMode(QOpenGLTexture::ClampToEdge);
   texture->setFormat(QOpenGLTexture::R32F);
   texture->allocateStorage(QOpenGLTexture::Red, QOpenGLTexture::Float32);
   QOpenGLPixelTransferOptions unpack;
   unpack.setAlignment(1);
-  for (std::size_t level = 0; level < pyramid.levels.size(); ++level) {
-    texture->setData(int(level), QOpenGLTexture::Red, QOpenGLTexture::Float32,
-                     pyramid.levels[level].values.data(), &unpack);
+  for (std::size_t level = 0; level < levels.size(); ++level) {
+    texture->setData(int(level), QOpenGLTexture::Red, QOpenGLTexture::Float32, levels[level].values,
+                     &unpack);
   }
-  entry.texture = std::move(texture);
-  return *entry.texture;
+  return texture;
+}
+
+}  // namespace
+
+QOpenGLTexture& TextureCache::heightPyramid(const core::Material& material) {
+  const TraceKey key = traceKey(material);
+  TraceEntry& entry = traceEntry(key, material);
+  if (entry.pyramid)
+    return *entry.pyramid;
+  core::MaxMipPyramid pyramid =
+      core::buildMaxMipPyramid(*entry.texels(), key.packed ? 3 : 0, key.depth);
+  if (key.packed) {
+    // The normal texture keeps 16 bits; a bound a rounding below its alpha could miss a hit.
+    for (core::MaxMipLevel& level : pyramid.levels) {
+      for (float& value : level.values)
+        value += 1.0f / 65535.0f;
+    }
+  }
+  std::vector<FloatLevel> levels;
+  for (const core::MaxMipLevel& level : pyramid.levels)
+    levels.push_back({level.width, level.height, level.values.data()});
+  entry.pyramid = uploadFloatLevels(levels);
+  return *entry.pyramid;
+}
+
+QOpenGLTexture& TextureCache::coneMap(const core::Material& material) {
+  const TraceKey key = traceKey(material);
+  TraceEntry& entry = traceEntry(key, material);
+  if (entry.cones)
+    return *entry.cones;
+  const std::shared_ptr<const Image> texels = entry.texels();
+  // The cones bound the float texels; the shader allows for a 16-bit texture's rounding.
+  const core::ConeMap cones = core::buildConeMap(*texels, key.packed ? 3 : 0, key.depth);
+  entry.cones = uploadFloatLevels({{cones.width, cones.height, cones.ratios.data()}});
+  return *entry.cones;
 }
 
 void TextureCache::releaseUnused(std::initializer_list<const core::Material*> materials) {
@@ -266,7 +313,7 @@ void TextureCache::releaseUnused(std::initializer_list<const core::Material*> ma
     }
     it = used ? std::next(it) : m_uploads.erase(it);
   }
-  for (auto it = m_pyramids.begin(); it != m_pyramids.end();) {
+  for (auto it = m_traces.begin(); it != m_traces.end();) {
     bool used = false;
     const MapSlot slot = it->first.packed ? MapSlot::Normal : MapSlot::Height;
     for (const core::Material* material : materials) {
@@ -274,7 +321,7 @@ void TextureCache::releaseUnused(std::initializer_list<const core::Material*> ma
                       material->map(slot).compressed.get() == it->first.compressed &&
                       material->parameterFlag(core::ParamId::HeightIsDepth) == it->first.depth);
     }
-    it = used ? std::next(it) : m_pyramids.erase(it);
+    it = used ? std::next(it) : m_traces.erase(it);
   }
 }
 
@@ -289,7 +336,7 @@ void TextureCache::setNativeCompressedUploads(bool native) {
 
 void TextureCache::release() {
   m_uploads.clear();
-  m_pyramids.clear();
+  m_traces.clear();
   for (auto& neutral : m_neutral)
     neutral.reset();
 }

@@ -32,6 +32,10 @@ class TextureCache {
   // (the height map, or the normal map's alpha when packed, inverted for depth maps; a
   // compression preview's decoded texels), built on first use: R32F, nearest, one level each.
   QOpenGLTexture& heightPyramid(const core::Material& material);
+  // The cone map (core/tracing/ConeMap.h) of the same height, for the cone technique: R32F, one
+  // level, nearest; built on first use, once per height map (a 1024x1024 map takes tens of
+  // milliseconds, a 4096x4096 one seconds).
+  QOpenGLTexture& coneMap(const core::Material& material);
   // Frees the uploads that none of `materials` uses any more.
   void releaseUnused(std::initializer_list<const core::Material*> materials);
   void release();
@@ -45,18 +49,25 @@ class TextureCache {
     bool native = false;      // compressed blocks uploaded as they are
   };
   std::map<Key, Entry> m_uploads;
-  struct PyramidKey {
+  // What the exact tracers walk is derived from the height the shaders read.
+  struct TraceKey {
     const core::Image* image;
     const core::CompressedTexture* compressed;  // a preview's texels are what is bounded
     bool packed;
     bool depth;
-    auto operator<=>(const PyramidKey&) const = default;
+    auto operator<=>(const TraceKey&) const = default;
   };
-  struct PyramidEntry {
-    std::shared_ptr<const core::Image> image;
-    std::unique_ptr<QOpenGLTexture> texture;
+  struct TraceEntry {
+    std::shared_ptr<const core::Image> image;  // keeps the key's address from being reused
+    std::shared_ptr<const core::CompressedTexture> compressed;
+    std::unique_ptr<QOpenGLTexture> pyramid;
+    std::unique_ptr<QOpenGLTexture> cones;
+    // The height texels the shaders fetch (a compression preview's decoded ones).
+    std::shared_ptr<const core::Image> texels() const;
   };
-  std::map<PyramidKey, PyramidEntry> m_pyramids;
+  static TraceKey traceKey(const core::Material& material);
+  TraceEntry& traceEntry(const TraceKey& key, const core::Material& material);
+  std::map<TraceKey, TraceEntry> m_traces;
   std::array<std::unique_ptr<QOpenGLTexture>, core::kMapSlotCount> m_neutral;
   bool m_nativeCompressed = true;
 };

@@ -164,8 +164,8 @@ bool parameterInUse(const ParameterSpec& spec, Technique technique, ShadowMode s
   switch (spec.use) {
     case ParamUse::Always:
       return true;
-    case ParamUse::Marching:  // the layered marches' sample counts; quadtree needs none
-      return isMarchingTechnique(technique) && technique != Technique::Quadtree;
+    case ParamUse::Marching:  // the layered marches' sample counts; exact tracing needs none
+      return isMarchingTechnique(technique) && !isExactTracing(technique);
     case ParamUse::Refinement:
       return technique == Technique::Relief;
     case ParamUse::Shadows:

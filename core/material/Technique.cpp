@@ -21,12 +21,14 @@ constexpr std::array kTechniques = {
     TechniqueInfo{Technique::Pom, "pom", "Parallax occlusion mapping"},
     TechniqueInfo{Technique::Relief, "relief", "Relief mapping (binary refinement)"},
     TechniqueInfo{Technique::Quadtree, "quadtree", "Quadtree (maximum mipmap, exact)"},
+    TechniqueInfo{Technique::Cone, "cone", "Cone stepping (exact)"},
     TechniqueInfo{Technique::Displacement, "displacement", "Displacement (tessellated geometry)"},
 };
 
 constexpr std::array kTechniqueList = {
-    Technique::Normal, Technique::Parallax, Technique::ParallaxLimited, Technique::Steep,
-    Technique::Pom,    Technique::Relief,   Technique::Quadtree,        Technique::Displacement};
+    Technique::Normal,   Technique::Parallax, Technique::ParallaxLimited,
+    Technique::Steep,    Technique::Pom,      Technique::Relief,
+    Technique::Quadtree, Technique::Cone,     Technique::Displacement};
 
 }  // namespace
 
@@ -44,7 +46,11 @@ std::string_view techniqueLabel(Technique technique) {
 
 bool isMarchingTechnique(Technique technique) {
   return technique == Technique::Steep || technique == Technique::Pom ||
-         technique == Technique::Relief || technique == Technique::Quadtree;
+         technique == Technique::Relief || isExactTracing(technique);
+}
+
+bool isExactTracing(Technique technique) {
+  return technique == Technique::Quadtree || technique == Technique::Cone;
 }
 
 bool isOccludingRelief(Technique technique) {

@@ -16,12 +16,17 @@ enum class Technique {
   Pom,              // parallax occlusion mapping as reference 001 gives it
   Relief,           // linear search, then binary refinement
   Quadtree,         // exact: maximum-mipmap traversal to the bilinear cell (Tevs et al. 2008)
+  Cone,             // exact: cone steps through empty space to the bilinear cell (Dummer 2006)
   Displacement,     // tessellated geometry moved by the height: the geometric reference
 };
 
 // Whether the technique marches along the view ray (and so can self-shadow and has a cost
 // that depends on the sample counts).
 bool isMarchingTechnique(Technique technique);
+
+// Whether the technique walks to the exact intersection with the bilinear field (quadtree,
+// cone), as far as the ray needs, so the sample counts do not apply.
+bool isExactTracing(Technique technique);
 
 // Whether the relief occludes itself (a marching technique, or displaced geometry): exports
 // ask the engine for its occlusion parallax then, not for the plain offset.

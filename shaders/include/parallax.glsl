@@ -106,14 +106,21 @@ ParallaxResult marchHeightField(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, 
   return result;
 }
 
+#if defined(TECHNIQUE_QUADTREE) || defined(TECHNIQUE_CONE)
+#include "bilinear_cell.glsl"
+#endif
 #if defined(TECHNIQUE_QUADTREE)
 #include "quadtree.glsl"
+#elif defined(TECHNIQUE_CONE)
+#include "cone.glsl"
 #endif
 
 ParallaxResult findVisiblePoint(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias,
                                 float mipLevel) {
 #if defined(TECHNIQUE_QUADTREE)
   return traceQuadtree(uv, V, scale, bias, mipLevel);
+#elif defined(TECHNIQUE_CONE)
+  return traceCones(uv, V, scale, bias, mipLevel);
 #elif defined(TECHNIQUE_PARALLAX)
   return parallaxOffset(uv, V, dx, dy, scale, bias, false);
 #elif defined(TECHNIQUE_PARALLAX_LIMITED)

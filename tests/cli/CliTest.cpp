@@ -185,7 +185,8 @@ TEST(Cli, RenderWritesThePresetsImage) {
 
 // --stats: a layered march of n layers takes 1 to n + 1 height samples a pixel (parallax.glsl
 // stops at the first layer below the surface), whatever the view; the quadtree counts its
-// pyramid fetches and four texels for each cell it intersects.
+// pyramid fetches and four texels for each cell it intersects; the cone technique four texels
+// (one gather) and one pyramid or cone fetch per step, so at least five everywhere.
 TEST(Cli, RenderStatsCountHeightSamplesPerCoveredPixel) {
   const auto stats = [](const char* technique) {
     const std::string out = scratchFolder() + "/stats-" + technique + ".png";
@@ -216,6 +217,14 @@ TEST(Cli, RenderStatsCountHeightSamplesPerCoveredPixel) {
                 .value(QStringLiteral("mean"))
                 .toDouble(),
             1.0);
+  const QJsonObject cone = stats("cone");
+  EXPECT_EQ(cone.value(QStringLiteral("pixels")).toDouble(),
+            pom.value(QStringLiteral("pixels")).toDouble());
+  EXPECT_GE(cone.value(QStringLiteral("samples_per_pixel"))
+                .toObject()
+                .value(QStringLiteral("p95"))
+                .toDouble(),
+            5.0);
 }
 
 TEST(Cli, RenderTakesMapsAndParametersAndViewOptions) {

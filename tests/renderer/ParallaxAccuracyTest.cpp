@@ -66,6 +66,17 @@ Image thinWallField() {
   return field;
 }
 
+Image spikeField() {
+  // Single-texel spikes at 1.0 every 16 texels on a floor at 0: the narrowest cones, and
+  // features a layered march steps through.
+  Image field(kFieldSize, kFieldSize, 1);
+  for (int y = 0; y < kFieldSize; ++y) {
+    for (int x = 0; x < kFieldSize; ++x)
+      field.at(x, y, 0) = (x % 16 == 5 && y % 16 == 9) ? 1.0f : 0.0f;
+  }
+  return field;
+}
+
 struct Measurement {
   double meanErrorTexels = 0.0;
   double p95ErrorTexels = 0.0;
@@ -198,33 +209,40 @@ TEST_F(ParallaxAccuracy, SteepParallaxIsWorseThanPom) {
   EXPECT_LT(steep.meanErrorTexels, 1.0 * steep.meanLayerTexels + 0.01);
 }
 
-// The quadtree walks the maximum-mipmap pyramid to the exact cell and intersects its bilinear
-// patch (Tevs et al. 2008), the surface the reference tracer intersects: what remains is float
-// precision in the walk and the 8-bit filtering weights some GPUs use for the error view's UV
-// pass. Measured on llvmpipe: see the printed lines.
-TEST_F(ParallaxAccuracy, QuadtreeMeetsTheExactTracerOnEveryField) {
-  for (const Image& field : {smoothField(), steppedField(), thinWallField()}) {
-    for (float pitch : {85.0f, 20.0f}) {
-      const Measurement m = measure(field, core::Technique::Quadtree, 8, 32, pitch);
-      ASSERT_GT(m.pixels, 20000);
-      EXPECT_LT(m.meanErrorTexels, 0.01) << "pitch " << pitch;
-      EXPECT_LT(m.p95ErrorTexels, 0.02) << "pitch " << pitch;
+// The exact tracers reach the bilinear patch the reference tracer intersects: the quadtree
+// walks the maximum-mipmap pyramid to the exact cell (Tevs et al. 2008), the cone technique
+// cone-steps there (core/tracing/ConeMap.h) and both solve the patch's quadratic. What remains is
+// float precision in the walk and the 8-bit filtering weights some GPUs use for the error view's
+// UV pass. Measured on llvmpipe: see the printed lines.
+constexpr core::Technique kExactTracers[] = {core::Technique::Quadtree, core::Technique::Cone};
+
+TEST_F(ParallaxAccuracy, ExactTracersMeetTheExactTracerOnEveryField) {
+  for (core::Technique technique : kExactTracers) {
+    for (const Image& field : {smoothField(), steppedField(), thinWallField(), spikeField()}) {
+      for (float pitch : {85.0f, 20.0f}) {
+        const Measurement m = measure(field, technique, 8, 32, pitch);
+        ASSERT_GT(m.pixels, 20000);
+        EXPECT_LT(m.meanErrorTexels, 0.01) << core::techniqueName(technique) << " pitch " << pitch;
+        EXPECT_LT(m.p95ErrorTexels, 0.02) << core::techniqueName(technique) << " pitch " << pitch;
+      }
     }
   }
 }
 
-TEST_F(ParallaxAccuracy, QuadtreeKeepsOneTexelWallsPomStepsOver) {
+TEST_F(ParallaxAccuracy, ExactTracersKeepOneTexelWallsPomStepsOver) {
   const Measurement pom = measure(thinWallField(), core::Technique::Pom, 16, 16, 20.0f);
-  const Measurement quadtree = measure(thinWallField(), core::Technique::Quadtree, 16, 16, 20.0f);
   EXPECT_GT(pom.p95ErrorTexels, 1.0);  // POM passes walls between its layers
-  EXPECT_LT(quadtree.p95ErrorTexels, 0.02);
-  EXPECT_LT(quadtree.meanErrorTexels, 0.05 * pom.meanErrorTexels);
+  for (core::Technique technique : kExactTracers) {
+    const Measurement exact = measure(thinWallField(), technique, 16, 16, 20.0f);
+    EXPECT_LT(exact.p95ErrorTexels, 0.02) << core::techniqueName(technique);
+    EXPECT_LT(exact.meanErrorTexels, 0.05 * pom.meanErrorTexels) << core::techniqueName(technique);
+  }
 }
 
 // The paths a plain height map does not take: a non-square map whose sizes are not powers of
 // two (odd pyramid levels, wrapping at both edges), depths (1 - h) packed in a normal map's
 // alpha (the 16-bit normal texture), the middle of the relief on the surface, and tiling 2.
-TEST_F(ParallaxAccuracy, QuadtreeIsExactForPackedDepthOnAnOddMap) {
+TEST_F(ParallaxAccuracy, ExactTracersAreExactForPackedDepthOnAnOddMap) {
   const int width = 40, height = 24;
   auto normals = std::make_shared<Image>(width, height, 4);
   for (int y = 0; y < height; ++y) {
@@ -238,20 +256,22 @@ TEST_F(ParallaxAccuracy, QuadtreeIsExactForPackedDepthOnAnOddMap) {
   }
   core::Material material;
   material.setMap(core::MapSlot::Normal, normals);
-  material.setTechnique(core::Technique::Quadtree);
   material.setParameter(ParamId::HeightInNormalAlpha, 1.0);
   material.setParameter(ParamId::HeightIsDepth, 1.0);
   material.setParameter(ParamId::HeightScale, kScale);
   material.setParameter(ParamId::HeightBias, -kScale / 2);
   material.setParameter(ParamId::Tiling, 2.0);
   material.setParameter(ParamId::ShadowMode, double(core::ShadowMode::Off));
-  for (float pitch : {85.0f, 20.0f}) {
-    const Measurement m = measureMaterial(material, width, pitch);
-    ASSERT_GT(m.pixels, 20000) << "pitch " << pitch;
-    // The 16-bit alpha is what both the GPU and the tracer read (the tracer from the float
-    // image): a depth step of 1/65535 moves a grazing hit by about 0.001 texel.
-    EXPECT_LT(m.meanErrorTexels, 0.01) << "pitch " << pitch;
-    EXPECT_LT(m.p95ErrorTexels, 0.02) << "pitch " << pitch;
+  for (core::Technique technique : kExactTracers) {
+    material.setTechnique(technique);
+    for (float pitch : {85.0f, 20.0f}) {
+      const Measurement m = measureMaterial(material, width, pitch);
+      ASSERT_GT(m.pixels, 20000) << "pitch " << pitch;
+      // The 16-bit alpha is what both the GPU and the tracer read (the tracer from the float
+      // image): a depth step of 1/65535 moves a grazing hit by about 0.001 texel.
+      EXPECT_LT(m.meanErrorTexels, 0.01) << core::techniqueName(technique) << " pitch " << pitch;
+      EXPECT_LT(m.p95ErrorTexels, 0.02) << core::techniqueName(technique) << " pitch " << pitch;
+    }
   }
 }
 

@@ -7,6 +7,8 @@
 #include "support/OffscreenFixture.h"
 #include "support/TestPaths.h"
 
+#include <cstdio>
+
 namespace relief::test {
 namespace {
 
@@ -15,6 +17,17 @@ namespace {
 // within half a level on average. On the same llvmpipe the images match exactly.
 constexpr double kMaxTolerance = 64.0 / 255.0;
 constexpr double kMeanTolerance = 0.5 / 255.0;
+
+core::Image crop(const core::Image& image, int left, int top, int width, int height) {
+  core::Image part(width, height, image.channels());
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      for (int c = 0; c < image.channels(); ++c)
+        part.at(x, y, c) = image.at(x + left, y + top, c);
+    }
+  }
+  return part;
+}
 
 class SampleRender : public OffscreenTest {
  protected:
@@ -69,6 +82,38 @@ TEST_F(SampleRender, EveryTechniqueMatchesItsBaseline) {
   }
 }
 
+// The two exact tracers reach the same bilinear surface by different walks (the maximum-mipmap
+// pyramid, cone steps), so where the height map is magnified their frames must agree: close
+// over the cobblestones, looking down at 30 degrees. Where the map is minified both take the
+// top of a pyramid block as the hit, but reach it from different points along the ray, so only
+// the near third of the frame, where the map is magnified, is compared (on llvmpipe: mean
+// 0.000, max 1/255 there; over the whole frame the mean is 0.17/255). The tolerance allows
+// GPUs that filter with 8-bit weights.
+TEST_F(SampleRender, ConeAndQuadtreeShowTheSameRelief) {
+  core::Result<core::LoadedPreset> preset = core::loadPreset(samplePreset("cobblestones"));
+  ASSERT_TRUE(preset.ok()) << preset.error();
+  offscreen().setMesh(core::makePrimitive(core::PrimitiveShape::Plane));
+  renderer::RenderView view;
+  view.camera.yawDeg = 30.0f;
+  view.camera.pitchDeg = 30.0f;
+  view.camera.distance = 0.35f;
+  core::Image frames[2];
+  for (int i = 0; i < 2; ++i) {
+    core::Material material = preset->preset.material;
+    material.setTechnique(i == 0 ? core::Technique::Quadtree : core::Technique::Cone);
+    offscreen().setMaterial(material);
+    core::Result<core::Image> image = offscreen().render(view, 320, 200);
+    ASSERT_TRUE(image.ok()) << image.error();
+    // The bottom third: the near ground.
+    frames[i] =
+        crop(image.value(), 0, image->height() * 2 / 3, image->width(), image->height() / 3);
+  }
+  const ImageDifference difference = compareImages(frames[0], frames[1]);
+  std::printf("cone against quadtree: mean %.5f, max %.4f\n", difference.meanError,
+              difference.maxError);
+  EXPECT_LT(difference.meanError, 0.25 / 255.0);
+}
+
 TEST_F(SampleRender, NormalMapChangesThePicture) {
   // Guards against a baseline that silently shows an unlit or flat surface: the sample with
   // its normal map must differ clearly from the same sample with the normal map removed.
@@ -84,15 +129,8 @@ TEST_F(SampleRender, NormalMapChangesThePicture) {
   ASSERT_TRUE(flat.ok());
   // Compare the middle of the frame, which the plane covers, not the background.
   auto middle = [](const core::Image& image) {
-    core::Image crop(image.width() / 3, image.height() / 3, image.channels());
-    for (int y = 0; y < crop.height(); ++y) {
-      for (int x = 0; x < crop.width(); ++x) {
-        for (int c = 0; c < crop.channels(); ++c) {
-          crop.at(x, y, c) = image.at(x + image.width() / 3, y + image.height() / 3, c);
-        }
-      }
-    }
-    return crop;
+    return crop(image, image.width() / 3, image.height() / 3, image.width() / 3,
+                image.height() / 3);
   };
   EXPECT_GT(compareImages(middle(withNormals), middle(flat.value())).meanError, 6.0 / 255.0);
 }

@@ -7,12 +7,14 @@
 // A second table times the shading models (classic Blinn-Phong, pbr metallic-roughness) on the
 // same techniques and views.
 //
-// The quadtree's row includes nothing of building its pyramid (once per height map, not per
-// frame); the bench prints that build's time for a 4096x4096 map after the table.
+// The quadtree's and cone's rows include nothing of building their pyramid and cone map (once
+// per height map, not per frame); the bench prints those builds' times for a 4096x4096 map after
+// the tables.
 //
 // Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5]
 #include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/tracing/ConeMap.h"
 #include "core/tracing/MaxMipPyramid.h"
 #include "renderer/MaterialRenderer.h"
 #include "renderer/OpenGLProbe.h"
@@ -125,11 +127,10 @@ int main(int argc, char* argv[]) {
   for (core::Technique technique : core::allTechniques()) {
     if (technique == core::Technique::Normal)
       continue;
-    // Parallax takes two samples whatever the count, the quadtree walks as far as the ray
+    // Parallax takes two samples whatever the count, the quadtree and cone walk as far as the ray
     // needs and displacement tessellates (at its default cap): one row each. POM also runs at
     // 64/256, the count issue 13 races the quadtree with.
-    const bool marching =
-        core::isMarchingTechnique(technique) && technique != core::Technique::Quadtree;
+    const bool marching = core::isMarchingTechnique(technique) && !core::isExactTracing(technique);
     for (int most : {8, 16, 32, 64, 256}) {
       if (!marching && most != 8)
         continue;
@@ -207,25 +208,41 @@ int main(int argc, char* argv[]) {
                   row.pbr[v] / row.classic[v]);
     std::printf("\n");
   }
-  // The quadtree's pyramid for a 4096x4096 map, built in core (median of 5).
+  // The quadtree's pyramid and the cone technique's cone map for a 4096x4096 height map, built
+  // in core from the cobblestones height tiled 4 x 4 (real data at that size). Median of 3
+  // (cones) and 5 (pyramid).
   {
-    core::Image big(4096, 4096, 1);
-    for (int y = 0; y < big.height(); ++y) {
-      for (int x = 0; x < big.width(); ++x)
-        big.at(x, y, 0) = float((x * 7 + y * 13) % 101) / 100.0f;
+    const core::Image& cobbles = *base.map(core::MapSlot::Height).image;
+    core::Image tiled(4096, 4096, 1);
+    for (int y = 0; y < tiled.height(); ++y) {
+      for (int x = 0; x < tiled.width(); ++x)
+        tiled.at(x, y, 0) = cobbles.at(x % cobbles.width(), y % cobbles.height(), 0);
     }
-    std::vector<double> builds;
-    for (int i = 0; i < 5; ++i) {
-      const auto start = std::chrono::steady_clock::now();
-      const core::MaxMipPyramid pyramid = core::buildMaxMipPyramid(big, 0, false);
-      builds.push_back(
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count());
-      if (pyramid.levels.size() != 13)
-        return 1;
-    }
-    std::sort(builds.begin(), builds.end());
-    std::printf("\nquadtree pyramid of a 4096x4096 height map: %.1f ms (median of 5)\n", builds[2]);
+    const auto milliseconds = [](auto&& work, int runs) {
+      std::vector<double> times;
+      for (int i = 0; i < runs; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        work();
+        times.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+      }
+      std::sort(times.begin(), times.end());
+      return times[times.size() / 2];
+    };
+    core::MaxMipPyramid pyramid;
+    const double pyramidMs =
+        milliseconds([&] { pyramid = core::buildMaxMipPyramid(tiled, 0, false); }, 5);
+    if (pyramid.levels.size() != 13)
+      return 1;
+    core::ConeMap cones;
+    const double conesMs = milliseconds([&] { cones = core::buildConeMap(tiled, 0, false); }, 3);
+    std::vector<float> ratios = cones.ratios;
+    std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+    std::printf(
+        "\n4096x4096 height map (cobblestones tiled 4x4): quadtree pyramid %.1f ms (median of "
+        "5), cone map %.0f ms (median of 3; median cone ratio %.1f texels per unit height)\n",
+        pyramidMs, conesMs, double(ratios[ratios.size() / 2]));
   }
   materialRenderer.releaseResources();
   context.doneCurrent();
