@@ -8,6 +8,7 @@
 #include "core/generators/Generators.h"
 #include "core/generators/ImageFilters.h"
 #include "core/image/ImageIO.h"
+#include "tools/bench/MedianTime.h"
 
 #include <sys/resource.h>
 
@@ -27,18 +28,7 @@ namespace {
 
 using namespace relief;
 
-double medianMilliseconds(int runs, const std::function<void()>& work) {
-  std::vector<double> times;
-  for (int i = 0; i < runs; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    times.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count());
-  }
-  std::nth_element(times.begin(), times.begin() + std::ptrdiff_t(times.size() / 2), times.end());
-  return times[times.size() / 2];
-}
+using bench::medianMilliseconds;
 
 double peakRssMegabytes() {
   rusage usage{};

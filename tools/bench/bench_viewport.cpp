@@ -18,6 +18,7 @@
 #include "core/tracing/MaxMipPyramid.h"
 #include "renderer/MaterialRenderer.h"
 #include "renderer/OpenGLProbe.h"
+#include "tools/bench/MedianTime.h"
 
 #include <QGuiApplication>
 #include <QOffscreenSurface>
@@ -218,25 +219,14 @@ int main(int argc, char* argv[]) {
       for (int x = 0; x < tiled.width(); ++x)
         tiled.at(x, y, 0) = cobbles.at(x % cobbles.width(), y % cobbles.height(), 0);
     }
-    const auto milliseconds = [](auto&& work, int runs) {
-      std::vector<double> times;
-      for (int i = 0; i < runs; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        work();
-        times.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count());
-      }
-      std::sort(times.begin(), times.end());
-      return times[times.size() / 2];
-    };
     core::MaxMipPyramid pyramid;
     const double pyramidMs =
-        milliseconds([&] { pyramid = core::buildMaxMipPyramid(tiled, 0, false); }, 5);
+        bench::medianMilliseconds(5, [&] { pyramid = core::buildMaxMipPyramid(tiled, 0, false); });
     if (pyramid.levels.size() != 13)
       return 1;
     core::ConeMap cones;
-    const double conesMs = milliseconds([&] { cones = core::buildConeMap(tiled, 0, false); }, 3);
+    const double conesMs =
+        bench::medianMilliseconds(3, [&] { cones = core::buildConeMap(tiled, 0, false); });
     std::vector<float> ratios = cones.ratios;
     std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
     std::printf(
