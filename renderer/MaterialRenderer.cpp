@@ -170,23 +170,26 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
   }
 
   std::string error;
-  ShaderProgram* programA = programFor(m_material, frame, error);
+  core::Material standInA, standInB;
+  const core::Material& materialA = drawable(m_material, standInA);
+  ShaderProgram* programA = programFor(materialA, frame, error);
   if (!programA)
     return core::makeError(error);
   if (!frame.split) {
-    drawMaterial(*programA, m_material, frame, width, height);
+    drawMaterial(*programA, materialA, frame, width, height);
   } else {
     // A left of the divider, B right of it, the same camera for both.
     const int divider =
         std::clamp(int(std::lround(frame.split->dividerFraction * float(width))), 0, width);
-    ShaderProgram* programB = programFor(frame.split->material, frame, error);
+    const core::Material& materialB = drawable(frame.split->material, standInB);
+    ShaderProgram* programB = programFor(materialB, frame, error);
     if (!programB)
       return core::makeError(error);
     glEnable(GL_SCISSOR_TEST);
     glScissor(0, 0, divider, height);
-    drawMaterial(*programA, m_material, frame, width, height);
+    drawMaterial(*programA, materialA, frame, width, height);
     glScissor(divider, 0, width - divider, height);
-    drawMaterial(*programB, frame.split->material, frame, width, height);
+    drawMaterial(*programB, materialB, frame, width, height);
     glDisable(GL_SCISSOR_TEST);
   }
   if (frame.split) {
@@ -195,6 +198,15 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
     m_textures.releaseUnused({&m_material});
   }
   return {};
+}
+
+const core::Material& MaterialRenderer::drawable(const core::Material& material,
+                                                 core::Material& standIn) const {
+  if (coneMapReady(material))
+    return material;
+  standIn = material;
+  standIn.setTechnique(core::Technique::Quadtree);
+  return standIn;
 }
 
 void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material& material,

@@ -70,6 +70,16 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   std::string compressedUploadSummary(const core::Material& material);
   // See TextureCache::setNativeCompressedUploads.
   void setNativeCompressedUploads(bool native) { m_textures.setNativeCompressedUploads(native); }
+  // The viewport builds cone maps off the GUI thread (TextureCache::setDeferredConeMaps); until
+  // a material's is provided, its frames are drawn with the quadtree, which finds the same exact
+  // surface, so a 4096x4096 height map does not hold the window for seconds.
+  void setDeferredConeMaps(bool deferred) { m_textures.setDeferredConeMaps(deferred); }
+  bool coneMapReady(const core::Material& material) const {
+    return material.technique() != core::Technique::Cone || m_textures.coneMapReady(material);
+  }
+  void provideConeMap(const core::Material& material, const core::ConeMap& cones) {
+    m_textures.provideConeMap(material, cones);
+  }
   // GL_RENDERER and GL_VERSION, for the status bar and reports.
   std::string rendererDescription();
 
@@ -77,6 +87,8 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   ShaderProgram* programFor(const core::Material& material, const FrameSettings& frame,
                             std::string& error);
   void drawBackground(const RenderView& view);
+  // `material`, or `standIn` set to it with the quadtree while its cone map is being built.
+  const core::Material& drawable(const core::Material& material, core::Material& standIn) const;
   void createSplitSumTable();  // pbr shading's (A, B) table (core/shading/SplitSumLut.h)
   // `width` x `height`: the viewport in pixels.
   void drawMaterial(ShaderProgram& program, const core::Material& material,

@@ -212,15 +212,42 @@ std::optional<bool> TextureCache::uploadedNatively(const core::Material& materia
   return m_uploads[Key{material.image(slot), slot}].native;
 }
 
-TextureCache::TraceKey TextureCache::traceKey(const core::Material& material) {
+TracedHeightKey tracedHeightKey(const core::Material& material) {
   const bool packed = material.parameterFlag(core::ParamId::HeightInNormalAlpha);
   const MapSlot slot = packed ? MapSlot::Normal : MapSlot::Height;
   // An empty slot keys as null (kept while the slot stays empty) and reads the neutral texel.
-  return TraceKey{material.image(slot), material.map(slot).compressed.get(), packed,
-                  material.parameterFlag(core::ParamId::HeightIsDepth)};
+  return TracedHeightKey{material.image(slot), material.map(slot).compressed.get(), packed,
+                         material.parameterFlag(core::ParamId::HeightIsDepth)};
 }
 
-TextureCache::TraceEntry& TextureCache::traceEntry(const TraceKey& key,
+namespace {
+
+// What the shader fetches as height: a compression preview's decoded texels, or the image.
+std::shared_ptr<const Image> tracedTexels(
+    const std::shared_ptr<const Image>& image,
+    const std::shared_ptr<const core::CompressedTexture>& compressed) {
+  if (compressed) {
+    core::Result<Image> decoded = core::decodeAsMap(*compressed, 0);
+    if (decoded)
+      return std::make_shared<const Image>(std::move(decoded.value()));
+  }
+  return image;
+}
+
+}  // namespace
+
+core::ConeMap buildTracedConeMap(const core::Material& material) {
+  const TracedHeightKey key = tracedHeightKey(material);
+  const MapSlot slot = key.packed ? MapSlot::Normal : MapSlot::Height;
+  std::shared_ptr<const Image> image = material.map(slot).image;
+  if (!image)
+    image = neutralImage(slot);
+  const std::shared_ptr<const Image> texels = tracedTexels(image, material.map(slot).compressed);
+  // The cones bound the float texels; the shader allows for a 16-bit texture's rounding.
+  return core::buildConeMap(*texels, key.packed ? 3 : 0, key.depth);
+}
+
+TextureCache::TraceEntry& TextureCache::traceEntry(const TracedHeightKey& key,
                                                    const core::Material& material) {
   TraceEntry& entry = m_traces[key];
   if (!entry.image) {
@@ -232,13 +259,7 @@ TextureCache::TraceEntry& TextureCache::traceEntry(const TraceKey& key,
 }
 
 std::shared_ptr<const Image> TextureCache::TraceEntry::texels() const {
-  // What the shader fetches: a compression preview's decoded texels.
-  if (compressed) {
-    core::Result<Image> decoded = core::decodeAsMap(*compressed, 0);
-    if (decoded)
-      return std::make_shared<const Image>(std::move(decoded.value()));
-  }
-  return image;
+  return tracedTexels(image, compressed);
 }
 
 namespace {
@@ -273,7 +294,7 @@ std::unique_ptr<QOpenGLTexture> uploadFloatLevels(const std::vector<FloatLevel>&
 }  // namespace
 
 QOpenGLTexture& TextureCache::heightPyramid(const core::Material& material) {
-  const TraceKey key = traceKey(material);
+  const TracedHeightKey key = tracedHeightKey(material);
   TraceEntry& entry = traceEntry(key, material);
   if (entry.pyramid)
     return *entry.pyramid;
@@ -294,15 +315,22 @@ QOpenGLTexture& TextureCache::heightPyramid(const core::Material& material) {
 }
 
 QOpenGLTexture& TextureCache::coneMap(const core::Material& material) {
-  const TraceKey key = traceKey(material);
-  TraceEntry& entry = traceEntry(key, material);
-  if (entry.cones)
-    return *entry.cones;
-  const std::shared_ptr<const Image> texels = entry.texels();
-  // The cones bound the float texels; the shader allows for a 16-bit texture's rounding.
-  const core::ConeMap cones = core::buildConeMap(*texels, key.packed ? 3 : 0, key.depth);
-  entry.cones = uploadFloatLevels({{cones.width, cones.height, cones.ratios.data()}});
+  TraceEntry& entry = traceEntry(tracedHeightKey(material), material);
+  if (!entry.cones)
+    provideConeMap(material, buildTracedConeMap(material));
   return *entry.cones;
+}
+
+bool TextureCache::coneMapReady(const core::Material& material) const {
+  if (!m_deferredConeMaps)
+    return true;
+  const auto it = m_traces.find(tracedHeightKey(material));
+  return it != m_traces.end() && it->second.cones;
+}
+
+void TextureCache::provideConeMap(const core::Material& material, const core::ConeMap& cones) {
+  TraceEntry& entry = traceEntry(tracedHeightKey(material), material);
+  entry.cones = uploadFloatLevels({{cones.width, cones.height, cones.ratios.data()}});
 }
 
 void TextureCache::releaseUnused(std::initializer_list<const core::Material*> materials) {

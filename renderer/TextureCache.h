@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/material/Material.h"
+#include "core/tracing/ConeMap.h"
 
 #include <QOpenGLPixelTransferOptions>
 #include <QOpenGLTexture>
@@ -16,6 +17,22 @@
 #include <utility>
 
 namespace relief::renderer {
+
+// What the exact tracers walk is derived from the height the shaders read: the image (the
+// height map, or the normal map when the height is packed in its alpha), a compression preview of
+// it, and whether it holds depths.
+struct TracedHeightKey {
+  const core::Image* image;
+  const core::CompressedTexture* compressed;  // a preview's texels are what is bounded
+  bool packed;
+  bool depth;
+  auto operator<=>(const TracedHeightKey&) const = default;
+};
+TracedHeightKey tracedHeightKey(const core::Material& material);
+
+// The cone map (core/tracing/ConeMap.h) of the height the shaders read for `material` (a
+// compression preview's decoded texels). No GL: safe off the GUI thread.
+core::ConeMap buildTracedConeMap(const core::Material& material);
 
 class TextureCache {
  public:
@@ -36,6 +53,12 @@ class TextureCache {
   // level, nearest; built on first use, once per height map (a 1024x1024 map takes tens of
   // milliseconds, a 4096x4096 one seconds).
   QOpenGLTexture& coneMap(const core::Material& material);
+  // Deferred (the viewport): coneMap() is not to be called for a height whose cone map is not
+  // ready; the owner builds it off the GUI thread (buildTracedConeMap) and hands it over with
+  // provideConeMap. Not deferred (the CLI, tests): coneMap() builds it on the spot.
+  void setDeferredConeMaps(bool deferred) { m_deferredConeMaps = deferred; }
+  bool coneMapReady(const core::Material& material) const;
+  void provideConeMap(const core::Material& material, const core::ConeMap& cones);
   // Frees the uploads that none of `materials` uses any more.
   void releaseUnused(std::initializer_list<const core::Material*> materials);
   void release();
@@ -49,14 +72,6 @@ class TextureCache {
     bool native = false;      // compressed blocks uploaded as they are
   };
   std::map<Key, Entry> m_uploads;
-  // What the exact tracers walk is derived from the height the shaders read.
-  struct TraceKey {
-    const core::Image* image;
-    const core::CompressedTexture* compressed;  // a preview's texels are what is bounded
-    bool packed;
-    bool depth;
-    auto operator<=>(const TraceKey&) const = default;
-  };
   struct TraceEntry {
     std::shared_ptr<const core::Image> image;  // keeps the key's address from being reused
     std::shared_ptr<const core::CompressedTexture> compressed;
@@ -65,9 +80,9 @@ class TextureCache {
     // The height texels the shaders fetch (a compression preview's decoded ones).
     std::shared_ptr<const core::Image> texels() const;
   };
-  static TraceKey traceKey(const core::Material& material);
-  TraceEntry& traceEntry(const TraceKey& key, const core::Material& material);
-  std::map<TraceKey, TraceEntry> m_traces;
+  TraceEntry& traceEntry(const TracedHeightKey& key, const core::Material& material);
+  std::map<TracedHeightKey, TraceEntry> m_traces;
+  bool m_deferredConeMaps = false;
   std::array<std::unique_ptr<QOpenGLTexture>, core::kMapSlotCount> m_neutral;
   bool m_nativeCompressed = true;
 };

@@ -1,10 +1,11 @@
 // BackgroundTask: the one way the editor runs work off the GUI thread — compression,
-// generation, the error view's exact trace, export, the preset library's thumbnails and saves,
-// and autosave. run() starts the work on Qt's thread pool with a WorkControl (a cancel flag the
-// work polls, a progress callback); a newer run() cancels the older, whose result is then
-// dropped; progress and the result come back on the GUI thread, to the caller's callbacks, for
-// the newest run only. The callback is where a result enters the document, as one undo command.
-// Destroying the task cancels the work and waits for it, so a callback never outlives its owner.
+// generation, the cone map, the error view's exact trace, export, the preset library's
+// thumbnails and saves, and autosave. run() starts the work on Qt's thread pool with a
+// WorkControl (a cancel flag the work polls, a progress callback); a newer run() cancels the
+// older, whose result is then dropped; progress and the result come back on the GUI thread, to
+// the caller's callbacks, for the newest run only. The callback is where a result enters the
+// document, as one undo command. Destroying the task cancels the work and waits for it, so a
+// callback never outlives its owner.
 #pragma once
 
 #include "core/base/Result.h"

@@ -33,7 +33,8 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
       m_samplesTimer(new QTimer(this)),
       m_interaction(new InteractionMonitor(this)),
       m_restTimer(new QTimer(this)),
-      m_errorTask(new BackgroundTask(this)) {
+      m_errorTask(new BackgroundTask(this)),
+      m_coneTask(new BackgroundTask(this)) {
   setMinimumSize(320, 240);
   m_samplesTimer->setSingleShot(true);
   m_samplesTimer->setInterval(kSamplesDelayMs);
@@ -75,6 +76,8 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
 ViewportWidget::~ViewportWidget() {
   m_errorTask->cancel();
   m_errorTask->waitForFinished();
+  m_coneTask->cancel();
+  m_coneTask->waitForFinished();
   if (context()) {
     // Our slot on aboutToBeDestroyed must not run on a half-destroyed widget.
     disconnect(context(), nullptr, this, nullptr);
@@ -266,6 +269,29 @@ void ViewportWidget::releaseGl() {
   }
 }
 
+void ViewportWidget::ensureConeMap(const core::Material& material) {
+  if (m_renderer->coneMapReady(material))
+    return;
+  const renderer::TracedHeightKey key = renderer::tracedHeightKey(material);
+  if (m_coneBuilding == key)
+    return;
+  m_coneBuilding = key;
+  Q_EMIT coneMapBuilding(true);
+  // The snapshot keeps the height's images alive, so its key still names them when it is done.
+  m_coneTask->run<core::ConeMap>(
+      [material](const core::WorkControl&) { return renderer::buildTracedConeMap(material); },
+      [this, material](core::ConeMap&& cones) {
+        m_coneBuilding.reset();
+        Q_EMIT coneMapBuilding(false);
+        if (!m_renderer || !isValid())
+          return;
+        makeCurrent();
+        m_renderer->provideConeMap(material, cones);
+        doneCurrent();
+        update();
+      });
+}
+
 void ViewportWidget::initializeGL() {
   // The widget's context can be recreated (re-parenting into a floating dock); release the old
   // objects while that context is still current.
@@ -278,6 +304,8 @@ void ViewportWidget::initializeGL() {
     Q_EMIT renderError(QString::fromStdString(status.error()));
     return;
   }
+  m_renderer->setDeferredConeMaps(true);
+  m_coneBuilding.reset();
   m_meshDirty = true;
   Q_EMIT rendererReady(QString::fromStdString(m_renderer->rendererDescription()));
 }
@@ -304,6 +332,9 @@ void ViewportWidget::paintGL() {
   m_renderer->setNativeCompressedUploads(m_nativeCompressed);
   auto [material, frame] = shownFrame();
   m_renderer->setMaterial(material);
+  ensureConeMap(material);
+  if (frame.split)
+    ensureConeMap(frame.split->material);
   std::optional<core::Material> compressed;
   if (showsCompressed())
     compressed = frame.split ? frame.split->material : material;

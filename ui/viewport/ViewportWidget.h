@@ -12,6 +12,7 @@
 #include "core/view/DebugView.h"
 #include "core/view/ViewState.h"
 #include "renderer/FrameSettings.h"
+#include "renderer/TextureCache.h"
 #include "ui/Forward.h"
 #include "ui/viewport/AdaptiveResolution.h"
 
@@ -130,6 +131,8 @@ class ViewportWidget : public QOpenGLWidget {
   void errorViewFinished(double meanTexels, double p95Texels, double maxTexels);
   void compressedUploadChanged(const QString& summary);
   void meshSourceChanged(const QString& source);
+  // A cone map is being built off the GUI thread (frames use the quadtree meanwhile), or not.
+  void coneMapBuilding(bool building);
 
  protected:
   void initializeGL() override;
@@ -145,6 +148,8 @@ class ViewportWidget : public QOpenGLWidget {
   void releaseGlBeforeContextLoss();
   void changed();  // view, material or frame changed: redraw and drop a stale error view
   void startErrorView(int width, int height);
+  // Starts building the cone map of a material shown with the cone technique, if it lacks one.
+  void ensureConeMap(const core::Material& material);
   void measureSamples(int width, int height);
   void paintOverlays();
   int dividerX() const;
@@ -179,6 +184,8 @@ class ViewportWidget : public QOpenGLWidget {
 
   // The error view: a CPU trace per frame, in the background.
   BackgroundTask* m_errorTask;  // the error view's exact trace
+  BackgroundTask* m_coneTask;   // the cone map of the height shown
+  std::optional<renderer::TracedHeightKey> m_coneBuilding;
   bool m_errorStale = true;
   std::optional<core::UvErrorMap> m_errorMap;
   QImage m_errorImage;

@@ -78,6 +78,14 @@ MainWindow::MainWindow(QWidget* parent)
     m_progress->setRange(0, std::max(total, 1));
     m_progress->setValue(done);
   });
+  connect(m_viewport, &ViewportWidget::coneMapBuilding, this, [this](bool building) {
+    if (building) {
+      statusBar()->showMessage(
+          tr("Building the cone map; drawn with the quadtree (the same exact surface) meanwhile"));
+    } else {
+      statusBar()->clearMessage();
+    }
+  });
   connect(m_viewport, &ViewportWidget::errorViewFinished, this,
           [this](double mean, double p95, double maximum) {
             statusBar()->showMessage(
