@@ -74,7 +74,8 @@ CliOptions renderOptions() {
       {QStringLiteral("tonemap"),
        QStringLiteral("name"),
        enumNames(core::allToneMappers(), core::toneMapperName) +
-           QStringLiteral(": none clips at 1, neutral is Khronos PBR Neutral. EXR output is "
+           QStringLiteral(": none clips at 1, neutral is Khronos PBR Neutral, aces is ACES "
+                          "filmic. EXR output is "
                           "the radiance before exposure and tone mapping."),
        {}},
       {QStringLiteral("set"),

@@ -17,7 +17,21 @@ vec3 pbrNeutral(vec3 color) {
   return lowered * (newPeak / peak) * keep + vec3(newPeak) * (1.0 - keep);
 }
 
+// ACES filmic as Stephen Hill fitted it (BakingLab ACES.hlsl), after the 1/0.6 exposure of the
+// glTF Sample Viewer and three.js. GLSL's mat3 takes columns: these are the rows transposed.
+vec3 acesFilmic(vec3 color) {
+  const mat3 kIn = mat3(0.59719, 0.07600, 0.02840, 0.35458, 0.90834, 0.13383, 0.04823, 0.01566,
+                        0.83777);
+  const mat3 kOut = mat3(1.60475, -0.10208, -0.00327, -0.53108, 1.10813, -0.07276, -0.07367,
+                         -0.00605, 1.07602);
+  vec3 v = kIn * (color / 0.6);
+  vec3 curved = (v * (v + 0.0245786) - 0.000090537) / (v * (0.983729 * v + 0.4329510) + 0.238081);
+  return clamp(kOut * curved, 0.0, 1.0);
+}
+
 vec3 displayTransform(vec3 radiance) {
   vec3 exposed = max(radiance, vec3(0.0)) * uExposure;
-  return uToneMapper == 1 ? pbrNeutral(exposed) : exposed;
+  if (uToneMapper == 1) return pbrNeutral(exposed);
+  if (uToneMapper == 2) return acesFilmic(exposed);
+  return exposed;
 }

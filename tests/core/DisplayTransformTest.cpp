@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace relief::core {
 namespace {
 
@@ -43,6 +45,26 @@ TEST(PbrNeutral, HighlightsRollOffTowardWhite) {
   }
 }
 
+// ACES filmic on greys, worked by hand from Hill's fit: both matrices' rows sum to 1, so a grey g
+// stays grey and becomes the curve (v (v + 0.0245786) - 0.000090537) /
+// (v (0.983729 v + 0.4329510) + 0.238081) at v = g / 0.6: 0.18 -> 0.21311, 1 -> 0.76340,
+// 4 -> 0.95224. The curve tends to 1 / 0.983729 > 1, clamped to 1.
+TEST(AcesFilmic, GreysFollowTheFittedCurveAndStayGrey) {
+  expectColor(acesFilmic(glm::vec3(0.18f)), glm::vec3(0.21311f), 2e-4f);
+  expectColor(acesFilmic(glm::vec3(1.0f)), glm::vec3(0.76340f), 2e-4f);
+  expectColor(acesFilmic(glm::vec3(4.0f)), glm::vec3(0.95224f), 2e-4f);
+  expectColor(acesFilmic(glm::vec3(1000.0f)), glm::vec3(1.0f), 1e-6f);
+  expectColor(acesFilmic(glm::vec3(0.0f)), glm::vec3(0.0f), 1e-3f);
+  float previous = 0.0f;
+  for (float x = 0.0f; x < 20.0f; x += 0.05f) {
+    const glm::vec3 y = acesFilmic({x, 0.5f * x, 0.1f * x});
+    EXPECT_GE(y.r, previous) << x;
+    EXPECT_LE(y.r, 1.0f);
+    EXPECT_GE(std::min(y.g, y.b), 0.0f);
+    previous = y.r;
+  }
+}
+
 TEST(DisplayTransform, ExposureIsInStopsAndNamesRoundTrip) {
   DisplayTransform transform;
   transform.exposureEv = 1.0f;
@@ -50,6 +72,8 @@ TEST(DisplayTransform, ExposureIsInStopsAndNamesRoundTrip) {
   transform.exposureEv = -2.0f;
   transform.toneMapper = ToneMapper::PbrNeutral;
   expectColor(applyDisplayTransform(transform, glm::vec3(2.0f)), pbrNeutral(glm::vec3(0.5f)));
+  transform.toneMapper = ToneMapper::Aces;
+  expectColor(applyDisplayTransform(transform, glm::vec3(4.0f)), acesFilmic(glm::vec3(1.0f)));
   for (ToneMapper mapper : allToneMappers())
     EXPECT_EQ(findToneMapper(toneMapperName(mapper)), mapper);
   EXPECT_FALSE(findToneMapper("filmic").has_value());

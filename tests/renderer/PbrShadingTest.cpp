@@ -146,37 +146,40 @@ TEST_F(PbrShading, TheDirectionalLightReflectsTheBrdf) {
 }
 
 // The display output is the float output's radiance through the display transform (exposure,
-// Khronos PBR Neutral) and the sRGB encoding, computed here by core::applyDisplayTransform;
-// 1.5/255 allows the output's 8-bit rounding. A bright light puts much of the sphere above 1.
+// then Khronos PBR Neutral or ACES filmic) and the sRGB encoding, computed here by
+// core::applyDisplayTransform; 1.5/255 allows the output's 8-bit rounding. A bright light puts
+// much of the sphere above 1.
 TEST_F(PbrShading, TheDisplayShowsTheRadianceThroughTheDisplayTransform) {
   offscreen().setMesh(core::makeSphere());
   offscreen().setMaterial(pbrMaterial(0.9f, 0.0f, 0.4f));
-  renderer::FrameSettings frame;
-  frame.view.camera.frame(core::makeSphere().bounds(), 1.0f);
-  frame.view.light.intensity = 3.0f;
-  frame.view.display = core::DisplayTransform{0.5f, core::ToneMapper::PbrNeutral};
-  frame.output = renderer::FrameOutput::FloatData;
-  core::Result<Image> radiance = offscreen().render(frame, 64, 64);
-  frame.output = renderer::FrameOutput::Display;
-  core::Result<Image> shown = offscreen().render(frame, 64, 64);
-  ASSERT_TRUE(radiance.ok() && shown.ok());
-  double worst = 0.0;
-  int aboveOne = 0;
-  for (int y = 0; y < 64; ++y) {
-    for (int x = 0; x < 64; ++x) {
-      if (radiance->at(x, y, 3) < 1.0f)
-        continue;
-      const glm::vec3 linear(radiance->at(x, y, 0), radiance->at(x, y, 1), radiance->at(x, y, 2));
-      aboveOne += linear.r * frame.view.display.exposureScale() > 1.0f;
-      const glm::vec3 expected = core::applyDisplayTransform(frame.view.display, linear);
-      for (int c = 0; c < 3; ++c) {
-        const double encoded = core::linearToSrgb(std::clamp(expected[c], 0.0f, 1.0f));
-        worst = std::max(worst, std::abs(encoded - double(shown->at(x, y, c))));
+  for (core::ToneMapper mapper : {core::ToneMapper::PbrNeutral, core::ToneMapper::Aces}) {
+    renderer::FrameSettings frame;
+    frame.view.camera.frame(core::makeSphere().bounds(), 1.0f);
+    frame.view.light.intensity = 3.0f;
+    frame.view.display = core::DisplayTransform{0.5f, mapper};
+    frame.output = renderer::FrameOutput::FloatData;
+    core::Result<Image> radiance = offscreen().render(frame, 64, 64);
+    frame.output = renderer::FrameOutput::Display;
+    core::Result<Image> shown = offscreen().render(frame, 64, 64);
+    ASSERT_TRUE(radiance.ok() && shown.ok());
+    double worst = 0.0;
+    int aboveOne = 0;
+    for (int y = 0; y < 64; ++y) {
+      for (int x = 0; x < 64; ++x) {
+        if (radiance->at(x, y, 3) < 1.0f)
+          continue;
+        const glm::vec3 linear(radiance->at(x, y, 0), radiance->at(x, y, 1), radiance->at(x, y, 2));
+        aboveOne += linear.r * frame.view.display.exposureScale() > 1.0f;
+        const glm::vec3 expected = core::applyDisplayTransform(frame.view.display, linear);
+        for (int c = 0; c < 3; ++c) {
+          const double encoded = core::linearToSrgb(std::clamp(expected[c], 0.0f, 1.0f));
+          worst = std::max(worst, std::abs(encoded - double(shown->at(x, y, c))));
+        }
       }
     }
+    EXPECT_GT(aboveOne, 50) << core::toneMapperName(mapper);
+    EXPECT_LT(worst, 1.5 / 255.0) << core::toneMapperName(mapper);
   }
-  EXPECT_GT(aboveOne, 50);
-  EXPECT_LT(worst, 1.5 / 255.0);
 }
 
 }  // namespace

@@ -64,11 +64,14 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   m_exposure->setDecimals(1);
   m_exposure->setSuffix(tr(" EV"));
   m_exposure->setToolTip(tr("Exposure of the shaded view in stops: +1 doubles the brightness."));
-  m_toneMapper->addItem(tr("None (clip)"), QStringLiteral("none"));
-  m_toneMapper->addItem(tr("Khronos PBR Neutral"), QStringLiteral("neutral"));
+  for (core::ToneMapper mapper : core::allToneMappers()) {
+    m_toneMapper->addItem(toQString(core::toneMapperLabel(mapper)),
+                          toQString(core::toneMapperName(mapper)));
+  }
   m_toneMapper->setToolTip(
       tr("How radiance above 1 is shown. None clips it. Khronos PBR Neutral keeps colours below "
-         "0.76 as they are and rolls highlights off smoothly toward white."));
+         "0.76 as they are and rolls highlights off smoothly toward white. ACES filmic is the "
+         "film look most engines ship: more contrast, highlights that shift toward white."));
   m_color->setToolTip(tr("Colour of the light."));
   form->addRow(tr("Azimuth"), m_azimuth);
   form->addRow(tr("Elevation"), m_elevation);
