@@ -2,12 +2,14 @@
 #include "renderer/MaterialRenderer.h"
 
 #include "core/compression/Compressor.h"
+#include "core/shading/EnvironmentMaps.h"
 #include "core/shading/SplitSumLut.h"
 #include "renderer/CompressedUpload.h"
 #include "renderer/ShaderVariant.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <QGenericMatrix>
 #include <QMatrix4x4>
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLTexture>
@@ -29,6 +31,9 @@ constexpr int kFirstMapUnit = 0;
 constexpr int kPyramidUnit = kFirstMapUnit + int(core::kMapSlotCount);  // the exact tracers'
 constexpr int kConeMapUnit = kPyramidUnit + 1;                          // the cone technique's
 constexpr int kSplitSumUnit = kConeMapUnit + 1;                         // pbr shading's table
+constexpr int kEnvironmentSpecularUnit = kSplitSumUnit + 1;             // and its environment
+constexpr int kEnvironmentIrradianceUnit = kEnvironmentSpecularUnit + 1;
+constexpr int kEnvironmentSourceUnit = kEnvironmentIrradianceUnit + 1;  // the sharp background
 // 32 x 32 entries of 4096 samples: the table varies smoothly, so 32 entries a side interpolate
 // well; 4096 samples keep grazing entries within 0.3% (core/shading tests). Built at start-up in
 // about 40 ms.
@@ -42,6 +47,10 @@ QMatrix4x4 toQt(const glm::mat4& m) {
 
 QVector3D toQt(const glm::vec3& v) {
   return QVector3D(v.x, v.y, v.z);
+}
+
+bool isPbr(const core::Material& material) {
+  return core::ShadingModel(int(material.parameter(ParamId::Shading))) == core::ShadingModel::Pbr;
 }
 
 std::string joined(const std::vector<std::string>& parts) {
@@ -62,10 +71,20 @@ MaterialRenderer::~MaterialRenderer() {
 
 core::Status MaterialRenderer::initialize() {
   initializeOpenGLFunctions();
-  if (core::Status status = m_backgroundProgram.build("background.vert", "background.frag");
-      !status) {
-    return status;
+  const std::map<core::Background, std::string> backgroundDefines = {
+      {core::Background::Color, "BACKGROUND_COLOR"},
+      {core::Background::Environment, "BACKGROUND_ENVIRONMENT"},
+      {core::Background::Blurred, "BACKGROUND_BLURRED"},
+  };
+  for (const auto& [background, define] : backgroundDefines) {
+    if (core::Status status =
+            m_backgroundPrograms[background].build("background.vert", "background.frag", {define});
+        !status) {
+      return status;
+    }
   }
+  if (core::Status status = m_environment.initialize(); !status)
+    return status;
   // The default variant up front, so a broken shader shows at start-up, not at first draw.
   std::string error;
   if (!programFor(m_material, FrameSettings{}, error))
@@ -96,7 +115,8 @@ void MaterialRenderer::releaseResources() {
   m_mesh.release();
   m_textures.release();
   m_materialPrograms.clear();
-  m_backgroundProgram.release();
+  m_backgroundPrograms.clear();
+  m_environment.release();
   m_reducedTarget.reset();
   m_splitSumTable.reset();
   glDeleteVertexArrays(1, &m_emptyVao);
@@ -154,6 +174,7 @@ ShaderProgram* MaterialRenderer::programFor(const core::Material& material,
 core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int height,
                                       unsigned framebuffer) {
   Q_ASSERT(m_initialized);
+  prepareEnvironment(frame);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
@@ -162,7 +183,7 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
   glClearDepthf(1.0f);
   if (frame.output == FrameOutput::Display) {
     glClear(GL_DEPTH_BUFFER_BIT);
-    drawBackground(frame.view);
+    drawBackground(frame.view, width, height);
   } else {
     // Data outputs: alpha 0 marks pixels the mesh does not cover.
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -229,6 +250,8 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   }
   m_splitSumTable->bind(unsigned(kSplitSumUnit));
   program.setUniformValue("uSplitSumLut", kSplitSumUnit);
+  if (isPbr(material))
+    bindEnvironment(program, frame.view.environment);
   program.setUniformValue("uHasRoughnessMap", material.image(MapSlot::Roughness) != nullptr);
   // A natively uploaded two-channel normal (BC5, EAC RG11, DXT5nm swizzled) has no Z texel.
   const auto& normal = material.map(MapSlot::Normal).compressed;
@@ -280,11 +303,60 @@ std::string MaterialRenderer::compressedUploadSummary(const core::Material& mate
   return summary;
 }
 
-void MaterialRenderer::drawBackground(const RenderView& view) {
-  QOpenGLShaderProgram& program = m_backgroundProgram.program();
+void MaterialRenderer::prepareEnvironment(const FrameSettings& frame) {
+  const bool shownBehind = frame.output == FrameOutput::Display &&
+                           frame.view.environment.background != core::Background::Color;
+  const bool lights = isPbr(m_material) || (frame.split && isPbr(frame.split->material));
+  if (!shownBehind && !lights)
+    return;
+  core::Result<std::shared_ptr<const core::Image>> radiance =
+      core::environmentRadiance(frame.view.environment.source);
+  m_environmentError.clear();
+  if (!radiance) {
+    m_environmentError = radiance.error();
+    radiance = core::environmentRadiance(
+        std::string(core::builtInEnvironmentName(core::BuiltInEnvironment::Uniform)));
+  }
+  m_environment.prepare(radiance.value());
+}
+
+void MaterialRenderer::bindEnvironment(QOpenGLShaderProgram& program,
+                                       const core::Environment& environment) {
+  m_environment.specular().bind(unsigned(kEnvironmentSpecularUnit));
+  m_environment.irradiance().bind(unsigned(kEnvironmentIrradianceUnit));
+  program.setUniformValue("uEnvironmentSpecular", kEnvironmentSpecularUnit);
+  program.setUniformValue("uEnvironmentIrradiance", kEnvironmentIrradianceUnit);
+  program.setUniformValue("uEnvironmentMaxLevel", float(EnvironmentLight::kSpecularLevels - 1));
+  program.setUniformValue("uEnvironmentIntensity", environment.intensity);
+  const glm::mat3 rotation = environment.worldToEnvironment();
+  program.setUniformValue("uEnvironmentRotation",
+                          QMatrix3x3(glm::value_ptr(glm::transpose(rotation))));
+}
+
+void MaterialRenderer::drawBackground(const RenderView& view, int width, int height) {
+  const core::Background background = view.environment.background;
+  QOpenGLShaderProgram& program = m_backgroundPrograms.at(background).program();
   program.bind();
-  program.setUniformValue("uTopColor", toQt(view.backgroundTop));
-  program.setUniformValue("uBottomColor", toQt(view.backgroundBottom));
+  if (background == core::Background::Color) {
+    program.setUniformValue("uTopColor", toQt(view.backgroundTop));
+    program.setUniformValue("uBottomColor", toQt(view.backgroundBottom));
+  } else {
+    bindEnvironment(program, view.environment);
+    const float aspect = float(width) / float(std::max(height, 1));
+    const glm::mat4 viewProjection =
+        view.camera.projectionMatrix(aspect) * view.camera.viewMatrix();
+    program.setUniformValue("uInverseViewProjection", toQt(glm::inverse(viewProjection)));
+    program.setUniformValue("uCameraPosition", toQt(view.camera.position()));
+    m_environment.source().bind(unsigned(kEnvironmentSourceUnit));
+    program.setUniformValue("uEnvironmentSource", kEnvironmentSourceUnit);
+    program.setUniformValue(
+        "uEnvironmentSourceSize",
+        QVector2D(float(m_environment.source().width()), float(m_environment.source().height())));
+    program.setUniformValue("uPixelAngle",
+                            glm::radians(view.camera.fovYDeg) / float(std::max(height, 1)));
+    program.setUniformValue("uExposure", view.display.exposureScale());
+    program.setUniformValue("uToneMapper", int(view.display.toneMapper));
+  }
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(m_emptyVao);
   glDrawArrays(GL_TRIANGLES, 0, 3);

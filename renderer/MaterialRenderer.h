@@ -8,6 +8,7 @@
 #include "core/image/Image.h"
 #include "core/material/Material.h"
 #include "core/mesh/Mesh.h"
+#include "renderer/EnvironmentLight.h"
 #include "renderer/FrameSettings.h"
 #include "renderer/GpuMesh.h"
 #include "renderer/ShaderProgram.h"
@@ -80,13 +81,23 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   void provideConeMap(const core::Material& material, const core::ConeMap& cones) {
     m_textures.provideConeMap(material, cones);
   }
+  // Why the last frame's environment could not be used ("" when it could): it was lit by the
+  // uniform white environment instead. Files are checked before they reach a view (the Light
+  // panel, the CLI), so this is for one that went missing since (a preset's).
+  const std::string& environmentError() const { return m_environmentError; }
+  // The prefiltered environment of the last frame that needed one, for tests and tools.
+  EnvironmentLight& environmentLight() { return m_environment; }
   // GL_RENDERER and GL_VERSION, for the status bar and reports.
   std::string rendererDescription();
 
  private:
   ShaderProgram* programFor(const core::Material& material, const FrameSettings& frame,
                             std::string& error);
-  void drawBackground(const RenderView& view);
+  // Prefilters the view's environment when the frame needs it (pbr shading, or a background
+  // that shows it) and it changed; see environmentError().
+  void prepareEnvironment(const FrameSettings& frame);
+  void drawBackground(const RenderView& view, int width, int height);
+  void bindEnvironment(QOpenGLShaderProgram& program, const core::Environment& environment);
   // `material`, or `standIn` set to it with the quadtree while its cone map is being built.
   const core::Material& drawable(const core::Material& material, core::Material& standIn) const;
   void createSplitSumTable();  // pbr shading's (A, B) table (core/shading/SplitSumLut.h)
@@ -98,7 +109,9 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
 
   bool m_initialized = false;
   std::map<std::string, std::unique_ptr<ShaderProgram>> m_materialPrograms;
-  ShaderProgram m_backgroundProgram;
+  std::map<core::Background, ShaderProgram> m_backgroundPrograms;
+  EnvironmentLight m_environment;
+  std::string m_environmentError;
   GpuMesh m_mesh;
   core::Bounds m_meshBounds;
   float m_meshWorldPerUv = 1.0f;  // core::worldUnitsPerUv, for the displacement technique

@@ -1,6 +1,7 @@
 // OffscreenRenderer; see OffscreenRenderer.h.
 #include "renderer/OffscreenRenderer.h"
 
+#include "core/shading/EnvironmentMaps.h"
 #include "renderer/MaterialRenderer.h"
 #include "renderer/OpenGLProbe.h"
 
@@ -88,6 +89,24 @@ core::Result<SampleCount> OffscreenRenderer::countHeightSamples(const FrameSetti
   if (!makeCurrent())
     return core::makeError("cannot make the offscreen OpenGL context current");
   return relief::renderer::countHeightSamples(*m_renderer, frame, width, height);
+}
+
+core::Result<PrefilteredEnvironment> OffscreenRenderer::prefilterEnvironment(
+    const std::string& source) {
+  if (!makeCurrent())
+    return core::makeError("cannot make the offscreen OpenGL context current");
+  core::Result<std::shared_ptr<const core::Image>> radiance = core::environmentRadiance(source);
+  if (!radiance)
+    return core::makeError(radiance.error());
+  EnvironmentLight& light = m_renderer->environmentLight();
+  // A copy, so that prepare() sees a new image and prefilters even when this one was shown.
+  light.prepare(std::make_shared<const core::Image>(*radiance.value()));
+  PrefilteredEnvironment result;
+  result.milliseconds = light.lastPrefilterMilliseconds();
+  for (int level = 0; level < EnvironmentLight::kSpecularLevels; ++level)
+    result.specular.push_back(light.readSpecularLevel(level));
+  result.irradiance = light.readIrradiance();
+  return result;
 }
 
 core::Result<ErrorViewInputs> OffscreenRenderer::renderErrorViewInputs(const FrameSettings& frame,

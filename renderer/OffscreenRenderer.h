@@ -12,6 +12,7 @@
 #include "renderer/SampleCount.h"
 
 #include <memory>
+#include <vector>
 
 class QOpenGLContext;
 class QOffscreenSurface;
@@ -19,6 +20,13 @@ class QOffscreenSurface;
 namespace relief::renderer {
 
 class MaterialRenderer;
+
+// An environment as pbr shading reads it (EnvironmentLight), read back for tests and tools.
+struct PrefilteredEnvironment {
+  std::vector<core::Image> specular;  // the GGX chain, level 0 (roughness 0) first
+  core::Image irradiance;             // E / pi
+  double milliseconds = 0.0;          // upload, mips and prefiltering, on the CPU clock
+};
 
 class OffscreenRenderer {
  public:
@@ -45,6 +53,9 @@ class OffscreenRenderer {
                                                int frames);
   // Height samples per covered pixel of the frame (SampleCount.h).
   core::Result<SampleCount> countHeightSamples(const FrameSettings& frame, int width, int height);
+  // Prefilters the environment `source` names (a built-in or a file, through
+  // core::environmentRadiance) and reads the result back. Each call prefilters again.
+  core::Result<PrefilteredEnvironment> prefilterEnvironment(const std::string& source);
   // The two float passes of the error view (see ErrorView.h).
   core::Result<ErrorViewInputs> renderErrorViewInputs(const FrameSettings& frame, int width,
                                                       int height);

@@ -103,7 +103,7 @@ void main() {
 
 #if DEBUG_VIEW == VIEW_SHADING
 #ifdef SHADING_PBR
-  vec3 radiance = shadePbr(surface, L, V, shadow);
+  vec3 radiance = shadePbr(surface, L, V, shadow, frame);
 #else
   vec3 radiance = shadeBlinnPhong(surface, L, V, shadow);
 #endif

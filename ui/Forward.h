@@ -32,6 +32,7 @@ class SetTechniqueCommand;
 namespace relief::ui::inline panels {
 class CompressPanel;
 class GeneratePanel;
+class EnvironmentPanel;
 class LightPanel;
 class MapsPanel;
 struct OptionEdit;

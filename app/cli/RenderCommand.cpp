@@ -3,6 +3,7 @@
 
 #include "../DisplayCheck.h"
 #include "CliCommon.h"
+#include "RenderLighting.h"
 
 #include "core/compression/MapFile.h"
 #include "core/image/ImageFileTypes.h"
@@ -67,17 +68,6 @@ CliOptions renderOptions() {
        {}},
       {QStringLiteral("light-yaw"), degrees, QStringLiteral("Light azimuth in degrees."), {}},
       {QStringLiteral("light-pitch"), degrees, QStringLiteral("Light elevation in degrees."), {}},
-      {QStringLiteral("exposure"),
-       QStringLiteral("EV"),
-       QStringLiteral("Exposure of the shading view in stops (-10..10); +1 doubles it."),
-       {}},
-      {QStringLiteral("tonemap"),
-       QStringLiteral("name"),
-       enumNames(core::allToneMappers(), core::toneMapperName) +
-           QStringLiteral(": none clips at 1, neutral is Khronos PBR Neutral, aces is ACES "
-                          "filmic. EXR output is "
-                          "the radiance before exposure and tone mapping."),
-       {}},
       {QStringLiteral("set"),
        QStringLiteral("name=value"),
        QStringLiteral("Set a material parameter (repeatable)."),
@@ -112,6 +102,8 @@ CliOptions renderOptions() {
                          enumNames(core::allDebugViews(), core::debugViewName) +
                          QStringLiteral(". error prints the UV error against the exact trace."),
                      QStringLiteral("shading")});
+  for (CliOption& option : lightingOptions())
+    options.push_back(std::move(option));
   options.push_back(strictOption(QStringLiteral("rendering")));
   options.push_back(jsonOption());
   options.push_back(
@@ -363,37 +355,15 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
   core::DirectionalLight& light = request.frame.view.light;
   if (request.presetView.camera)
     camera = *request.presetView.camera;
-  if (request.presetView.light)
-    light = *request.presetView.light;
-  core::DisplayTransform& display = request.frame.view.display;
-  if (request.presetView.display)
-    display = *request.presetView.display;
+  if (auto exit = applyLightingOptions(parser, request.presetView, request.frame.view))
+    return exit;
   const auto yaw = numberOption(parser, QStringLiteral("yaw"), camera.yawDeg);
   const auto pitch = numberOption(parser, QStringLiteral("pitch"), camera.pitchDeg);
   const auto distance = numberOption(parser, QStringLiteral("distance"), 0.0);
   const auto lightYaw = numberOption(parser, QStringLiteral("light-yaw"), light.azimuthDeg);
   const auto lightPitch = numberOption(parser, QStringLiteral("light-pitch"), light.elevationDeg);
-  const auto exposure = numberOption(parser, QStringLiteral("exposure"), display.exposureEv);
-  if (!yaw || !pitch || !distance || !lightYaw || !lightPitch || !exposure)
+  if (!yaw || !pitch || !distance || !lightYaw || !lightPitch)
     return kExitUsage;
-  if (*exposure < core::DisplayTransform::kMinExposureEv ||
-      *exposure > core::DisplayTransform::kMaxExposureEv) {
-    printError(QStringLiteral("--exposure must be within %1..%2 stops")
-                   .arg(core::DisplayTransform::kMinExposureEv)
-                   .arg(core::DisplayTransform::kMaxExposureEv));
-    return kExitUsage;
-  }
-  display.exposureEv = float(*exposure);
-  if (parser.isSet(QStringLiteral("tonemap"))) {
-    const QString name = parser.value(QStringLiteral("tonemap"));
-    const std::optional<core::ToneMapper> mapper = core::findToneMapper(name.toStdString());
-    if (!mapper) {
-      printError(QStringLiteral("--tonemap %1: expected one of %2")
-                     .arg(name, enumNames(core::allToneMappers(), core::toneMapperName)));
-      return kExitUsage;
-    }
-    display.toneMapper = *mapper;
-  }
   if (*pitch < core::OrbitCamera::kMinPitchDeg || *pitch > core::OrbitCamera::kMaxPitchDeg ||
       (parser.isSet(QStringLiteral("distance")) && *distance <= 0.0) || *lightPitch < -90.0 ||
       *lightPitch > 90.0) {

@@ -181,6 +181,33 @@ void readMaps(const QJsonObject& object, const std::string& path, Preset& preset
   }
 }
 
+// Built-ins by name; anything with an extension is a file relative to the preset, as meshes.
+// A file that is missing now is kept as given: the viewport says so and lights with the
+// uniform white until it is back.
+Environment readEnvironment(const QJsonObject& object, const QDir& presetDir, Problems& problems) {
+  Environment result;
+  const QString source = object.value(QStringLiteral("source")).toString();
+  if (!source.isEmpty()) {
+    result.source = QFileInfo(source).suffix().isEmpty()
+                        ? source.toStdString()
+                        : QDir::cleanPath(presetDir.absoluteFilePath(source)).toStdString();
+  }
+  if (auto v = readNumber(object.value(QStringLiteral("intensity")), "view.environment.intensity",
+                          0, Environment::kMaxIntensity, problems))
+    result.intensity = float(*v);
+  if (auto v = readNumber(object.value(QStringLiteral("rotation")), "view.environment.rotation",
+                          -360, 360, problems))
+    result.rotationDeg = float(*v);
+  if (object.contains(QStringLiteral("background"))) {
+    const std::string name = object.value(QStringLiteral("background")).toString().toStdString();
+    if (const std::optional<Background> background = findBackground(name))
+      result.background = *background;
+    else
+      problems.add("view.environment.background '" + name + "' is not a background; color used");
+  }
+  return result;
+}
+
 void readView(const QJsonObject& object, const std::string& path, ViewState& view,
               Problems& problems) {
   const QDir presetDir = QFileInfo(QString::fromStdString(path)).absoluteDir();
@@ -244,11 +271,13 @@ void readView(const QJsonObject& object, const std::string& path, ViewState& vie
       if (const std::optional<ToneMapper> mapper = findToneMapper(name))
         result.toneMapper = *mapper;
       else
-        problems.add("view.display.toneMapping '" + name +
-                     "' is not one of none, neutral; none used");
+        problems.add("view.display.toneMapping '" + name + "' is not a tone mapper; none used");
     }
     view.display = result;
   }
+  if (object.contains(QStringLiteral("environment")))
+    view.environment = readEnvironment(object.value(QStringLiteral("environment")).toObject(),
+                                       presetDir, problems);
 }
 
 // Brings an older file's JSON to the current version. Version 1 has no compression choices
@@ -447,6 +476,17 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
     view.insert(QStringLiteral("display"),
                 QJsonObject{{QStringLiteral("exposure"), tidy(d.exposureEv)},
                             {QStringLiteral("toneMapping"), qstr(toneMapperName(d.toneMapper))}});
+  }
+  if (preset.view.environment) {
+    const Environment& e = *preset.view.environment;
+    const QString source = QString::fromStdString(e.source);
+    view.insert(
+        QStringLiteral("environment"),
+        QJsonObject{{QStringLiteral("source"),
+                     QFileInfo(source).isAbsolute() ? presetDir.relativeFilePath(source) : source},
+                    {QStringLiteral("intensity"), tidy(e.intensity)},
+                    {QStringLiteral("rotation"), tidy(e.rotationDeg)},
+                    {QStringLiteral("background"), qstr(backgroundName(e.background))}});
   }
   if (view.isEmpty()) {
     root.remove(QStringLiteral("view"));

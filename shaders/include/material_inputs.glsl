@@ -39,8 +39,7 @@ uniform vec3 uCameraPosition;   // world space
 uniform mat4 uViewProjection;
 uniform vec3 uLightDirection;   // world space, unit, toward the light
 uniform vec3 uLightColor;       // linear RGB times intensity
-uniform float uAmbient;         // classic: fraction of the albedo lit without direction;
-                                // pbr: radiance of the uniform environment
+uniform float uAmbient;         // classic: fraction of the albedo lit without direction
 uniform float uExposure;        // display: 2^EV on the radiance
 uniform int uToneMapper;        // display: 0 none, 1 Khronos PBR Neutral, 2 ACES (core/view/DisplayTransform)
 uniform vec2 uDepthDisplayRange;  // world distances mapped to black..white in the depth view

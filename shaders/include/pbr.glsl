@@ -5,12 +5,15 @@
 //
 // Direct light: the directional light's irradiance is pi * colour * intensity, so that a white
 // Lambert surface facing a light of intensity 1 shows 1, as under classic shading.
-// Indirect light: a uniform environment of radiance uAmbient (white), through the split-sum
-// table (Karis 2013) with multiple-scattering energy compensation (Fdez-Agüera, JCGT 2019), so
-// a white furnace shows 1 at any roughness; AO darkens it. Self-shadowing darkens the direct
+// Indirect light: the prefiltered environment (environment.glsl) through the split-sum table
+// (Karis 2013) with multiple-scattering energy compensation (Fdez-Agüera, JCGT 2019), so a
+// white furnace shows 1 at any roughness; AO darkens it. Self-shadowing darkens the direct
 // light only.
 
-const float kPi = 3.14159265358979;
+#include "constants.glsl"
+#include "environment.glsl"
+#include "tangent_space.glsl"
+
 const float kDielectricF0 = 0.04;
 
 float ggxDistribution(float alpha, float nDotH) {
@@ -48,9 +51,12 @@ vec3 gltfBrdf(vec3 baseColor, float metallic, float roughness, vec3 n, vec3 l, v
   return mix(dielectric, metal, metallic);
 }
 
-// Light reflected from a uniform environment of radiance `radiance`.
-vec3 uniformEnvironment(vec3 baseColor, float metallic, float roughness, float nDotV,
-                        float radiance) {
+// Light reflected from the environment, for unit world-space normal n and view v. Fdez-Agüera's
+// split: single scattering sees the radiance prefiltered along the reflection; the energy it
+// loses (multiple scattering) and the diffuse part see the irradiance. Under a uniform
+// environment both are the same and the sum is exactly the white furnace's.
+vec3 environmentLight(vec3 baseColor, float metallic, float roughness, float nDotV, vec3 n,
+                      vec3 v) {
   vec2 ab = texture(uSplitSumLut, vec2(nDotV, roughness)).rg;
   vec3 f0 = mix(vec3(kDielectricF0), baseColor, metallic);
   vec3 diffuseColor = baseColor * (1.0 - metallic);
@@ -58,12 +64,16 @@ vec3 uniformEnvironment(vec3 baseColor, float metallic, float roughness, float n
   float energy = ab.x + ab.y;             // Ess
   vec3 averageFresnel = f0 + (1.0 - f0) / 21.0;
   vec3 multipleScatter = singleScatter * averageFresnel / (1.0 - (1.0 - energy) * averageFresnel);
-  vec3 specular = singleScatter + multipleScatter * (1.0 - energy);
-  vec3 diffuse = diffuseColor * (1.0 - specular);
-  return (specular + diffuse) * radiance;
+  vec3 multipleSpecular = multipleScatter * (1.0 - energy);
+  vec3 diffuse = diffuseColor * (1.0 - singleScatter - multipleSpecular);
+  vec3 radiance = environmentSpecular(reflect(-v, n), roughness);
+  vec3 irradiance = environmentIrradiance(n);
+  return singleScatter * radiance + (multipleSpecular + diffuse) * irradiance;
 }
 
-vec3 shadePbr(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent, float shadow) {
+// `frame` turns the tangent-space normal and view into world space for the environment.
+vec3 shadePbr(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent, float shadow,
+              TangentFrame frame) {
   vec3 n = surface.normal;
   vec3 l = normalize(lightTangent);
   vec3 v = normalize(viewTangent);
@@ -77,7 +87,10 @@ vec3 shadePbr(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent, float 
   vec3 direct = gltfBrdf(surface.albedo, uMetallic, roughness, n, l, v) * nDotL * kPi *
                 uLightColor * lit;
   float nDotV = clamp(dot(n, v), 1e-4, 1.0);
-  vec3 indirect = uniformEnvironment(surface.albedo, uMetallic, roughness, nDotV, uAmbient) *
+  vec3 worldNormal = fromTangentSpace(frame, n);
+  vec3 worldView = fromTangentSpace(frame, v);
+  vec3 indirect = environmentLight(surface.albedo, uMetallic, roughness, nDotV, worldNormal,
+                                   worldView) *
                   surface.occlusion;
   return direct + indirect;
 }

@@ -23,3 +23,9 @@ vec3 toTangentSpace(TangentFrame frame, vec3 worldVector) {
   return vec3(dot(frame.tangent, worldVector), dot(frame.bitangent, worldVector),
               dot(frame.normal, worldVector));
 }
+
+// The inverse: the frame is orthonormal, so its transpose.
+vec3 fromTangentSpace(TangentFrame frame, vec3 tangentVector) {
+  return frame.tangent * tangentVector.x + frame.bitangent * tangentVector.y +
+         frame.normal * tangentVector.z;
+}

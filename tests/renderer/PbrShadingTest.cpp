@@ -56,7 +56,8 @@ class PbrShading : public OffscreenTest {
     frame.output = renderer::FrameOutput::FloatData;
     frame.view.camera.frame(core::makeSphere().bounds(), 1.0f);
     frame.view.light.intensity = 0.0f;
-    frame.view.light.ambient = 1.0f;
+    frame.view.environment.source = "uniform";
+    frame.view.environment.intensity = 1.0f;
     core::Result<Image> image = offscreen().render(frame, 96, 96);
     EXPECT_TRUE(image.ok()) << image.error();
     return image.ok() ? std::move(image).value() : Image(1, 1, 4);
@@ -125,7 +126,7 @@ TEST_F(PbrShading, TheDirectionalLightReflectsTheBrdf) {
   frame.view.light.elevationDeg = 40.0f;
   frame.view.light.color = glm::vec3(1.0f);
   frame.view.light.intensity = 1.5f;
-  frame.view.light.ambient = 0.0f;
+  frame.view.environment.intensity = 0.0f;
   // World to the plane's tangent space: T = +X, B = -Z, N = +Y.
   const auto tangent = [](glm::vec3 w) { return glm::normalize(glm::vec3(w.x, -w.z, w.y)); };
   const glm::vec3 l = tangent(frame.view.light.direction());

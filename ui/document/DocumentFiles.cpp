@@ -95,7 +95,9 @@ bool DocumentFiles::newDocument() {
     return false;
   m_document->reset(core::Material(), QString());
   m_recovery->clear();
-  showView({std::nullopt, std::nullopt, settings::defaultMesh().toStdString(), std::nullopt});
+  core::ViewState fresh;
+  fresh.mesh = settings::defaultMesh().toStdString();
+  showView(fresh);
   Q_EMIT statusMessage(tr("New material: load or generate maps to begin"), 5000);
   return true;
 }

@@ -2,6 +2,7 @@
 #include "ui/panels/LightPanel.h"
 
 #include "core/image/ColorSpace.h"
+#include "ui/panels/EnvironmentPanel.h"
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/QtText.h"
 
@@ -9,9 +10,11 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
@@ -42,8 +45,16 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
       m_ambient(new QDoubleSpinBox),
       m_color(new QPushButton),
       m_exposure(new QDoubleSpinBox),
-      m_toneMapper(new QComboBox) {
-  auto* form = new QFormLayout(this);
+      m_toneMapper(new QComboBox),
+      m_environment(new EnvironmentPanel(viewport)) {
+  auto* column = new QVBoxLayout(this);
+  auto* form = new QFormLayout;
+  column->addLayout(form);
+  auto* environmentGroup = new QGroupBox(tr("Environment (pbr light, background)"));
+  auto* environmentColumn = new QVBoxLayout(environmentGroup);
+  environmentColumn->addWidget(m_environment);
+  column->addWidget(environmentGroup);
+  column->addStretch(1);
   m_azimuth->setRange(0, 359);
   m_azimuth->setToolTip(
       tr("Direction the light comes from, around the vertical axis "
@@ -56,8 +67,8 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   m_ambient->setRange(0.0, 1.0);
   m_ambient->setSingleStep(0.02);
   m_ambient->setToolTip(
-      tr("Light without direction, scaled by the AO map. Classic shading: a fraction of the "
-         "colour map. PBR shading: the radiance of a uniform white environment."));
+      tr("Classic shading: light without direction, a fraction of the colour map, scaled by "
+         "the AO map. PBR shading takes it from the environment instead."));
   m_exposure->setRange(core::DisplayTransform::kMinExposureEv,
                        core::DisplayTransform::kMaxExposureEv);
   m_exposure->setSingleStep(0.5);

@@ -1,6 +1,6 @@
-// LightPanel: the directional light's azimuth and elevation, colour, intensity and ambient, and
-// the display's exposure and tone mapping. Kept in step with the viewport, where Ctrl+drag moves
-// the same light.
+// LightPanel: the directional light's azimuth and elevation, colour, intensity and ambient, the
+// display's exposure and tone mapping, and the environment (EnvironmentPanel). Kept in step with
+// the viewport, where Ctrl+drag moves the same light.
 #pragma once
 
 #include "ui/Forward.h"
@@ -27,6 +27,7 @@ class LightPanel : public QWidget {
   QPushButton* colorButton() const { return m_color; }
   QDoubleSpinBox* exposureBox() const { return m_exposure; }
   QComboBox* toneMapperBox() const { return m_toneMapper; }
+  EnvironmentPanel* environmentPanel() const { return m_environment; }
 
  public Q_SLOTS:
   void showLight();  // reads the viewport's light into the controls
@@ -43,6 +44,7 @@ class LightPanel : public QWidget {
   QPushButton* m_color;
   QDoubleSpinBox* m_exposure;
   QComboBox* m_toneMapper;
+  EnvironmentPanel* m_environment;
 };
 
 }  // namespace relief::ui::inline panels

@@ -110,6 +110,12 @@ void ViewportWidget::setDisplayTransform(const core::DisplayTransform& display) 
   Q_EMIT lightChanged();
 }
 
+void ViewportWidget::setEnvironment(const core::Environment& environment) {
+  m_frame.view.environment = environment;
+  changed();
+  Q_EMIT lightChanged();
+}
+
 void ViewportWidget::setCamera(const core::OrbitCamera& camera) {
   m_frame.view.camera = camera;
   m_framePending = false;
@@ -144,8 +150,8 @@ core::Result<QString> ViewportWidget::showMesh(const QString& nameOrPath) {
 }
 
 core::ViewState ViewportWidget::viewState() const {
-  return {m_frame.view.camera, m_frame.view.light, m_meshSource.toStdString(),
-          m_frame.view.display};
+  return {m_frame.view.camera, m_frame.view.light, m_meshSource.toStdString(), m_frame.view.display,
+          m_frame.view.environment};
 }
 
 core::Status ViewportWidget::showViewState(const core::ViewState& state) {
@@ -163,6 +169,8 @@ core::Status ViewportWidget::showViewState(const core::ViewState& state) {
     setLight(*state.light);
   if (state.display)
     setDisplayTransform(*state.display);
+  if (state.environment)
+    setEnvironment(*state.environment);
   return meshShown;
 }
 
@@ -361,6 +369,11 @@ void ViewportWidget::paintGL() {
                                                       defaultFramebufferObject());
       !status) {
     Q_EMIT renderError(QString::fromStdString(status.error()));
+  }
+  if (const QString problem = QString::fromStdString(m_renderer->environmentError());
+      problem != m_environmentProblem) {
+    m_environmentProblem = problem;
+    Q_EMIT environmentProblem(problem);
   }
   const QString summary =
       compressed ? QString::fromStdString(m_renderer->compressedUploadSummary(*compressed))

@@ -45,6 +45,10 @@ class ViewportWidget : public QOpenGLWidget {
   void setLight(const core::DirectionalLight& light);  // emits lightChanged
   // Exposure and tone mapping of the shaded view; emits lightChanged (the Light panel shows it).
   void setDisplayTransform(const core::DisplayTransform& display);
+  // pbr shading's image-based light and the background; emits lightChanged. A file source
+  // should have been read through core::environmentRadiance first (the Light panel does, off
+  // the GUI thread), so the frame finds it ready.
+  void setEnvironment(const core::Environment& environment);
   // Places the camera as given, instead of framing the mesh (a preset's saved view).
   void setCamera(const core::OrbitCamera& camera);
   const core::Mesh& mesh() const { return m_mesh; }
@@ -56,7 +60,7 @@ class ViewportWidget : public QOpenGLWidget {
   // primitive; the error names the file. Emits meshSourceChanged.
   core::Result<QString> showMesh(const QString& nameOrPath);
 
-  // The mesh, camera and light shown, as a preset stores them.
+  // The mesh, camera, light, environment and display shown, as a preset stores them.
   core::ViewState viewState() const;
   // Shows a preset's view in one call: its mesh when it names one (and it is not already
   // shown), its camera (the mesh framed when it has none) and its light. A mesh that cannot be
@@ -133,6 +137,9 @@ class ViewportWidget : public QOpenGLWidget {
   void meshSourceChanged(const QString& source);
   // A cone map is being built off the GUI thread (frames use the quadtree meanwhile), or not.
   void coneMapBuilding(bool building);
+  // The environment shown cannot be read (the message names the file) and the uniform white
+  // lights the material instead; "" when that is over.
+  void environmentProblem(const QString& message);
 
  protected:
   void initializeGL() override;
@@ -162,6 +169,7 @@ class ViewportWidget : public QOpenGLWidget {
   std::vector<CompressedPreview> m_previews;
   CompressedView m_compressedView = CompressedView::Original;
   QString m_uploadSummary;
+  QString m_environmentProblem;  // the renderer's environmentError() last reported
   bool m_nativeCompressed = true;
   renderer::FrameSettings m_frame;
   float m_dividerFraction = 0.5f;

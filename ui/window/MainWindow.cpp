@@ -86,6 +86,13 @@ MainWindow::MainWindow(QWidget* parent)
       statusBar()->clearMessage();
     }
   });
+  connect(m_viewport, &ViewportWidget::environmentProblem, this, [this](const QString& message) {
+    if (message.isEmpty()) {
+      statusBar()->clearMessage();
+    } else {
+      statusBar()->showMessage(tr("%1; lit by the uniform white environment instead").arg(message));
+    }
+  });
   connect(m_viewport, &ViewportWidget::errorViewFinished, this,
           [this](double mean, double p95, double maximum) {
             statusBar()->showMessage(

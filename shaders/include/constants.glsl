@@ -1,0 +1,3 @@
+// Constants more than one shader part needs.
+
+const float kPi = 3.14159265358979;

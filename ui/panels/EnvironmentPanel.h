@@ -1,0 +1,57 @@
+// EnvironmentPanel: pbr shading's image-based light and the background, in the Light dock: the
+// environment (a built-in, or an EXR/HDR file read off the GUI thread and checked before it is
+// shown), its intensity and rotation, and what the background shows.
+#pragma once
+
+#include "ui/Forward.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QSlider;
+
+namespace relief::ui::inline panels {
+
+class EnvironmentPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit EnvironmentPanel(ViewportWidget* viewport, QWidget* parent = nullptr);
+  ~EnvironmentPanel() override;
+
+  QComboBox* sourceBox() const { return m_source; }
+  QDoubleSpinBox* intensityBox() const { return m_intensity; }
+  QSlider* rotationSlider() const { return m_rotation; }
+  QComboBox* backgroundBox() const { return m_background; }
+
+  // Reads `path` off the GUI thread and shows it when it is a usable environment; otherwise
+  // says why in a message box naming the file. The file dialog's choice ends here too.
+  void loadFile(const QString& path);
+
+ Q_SIGNALS:
+  // A file finished loading: shown (ok) or refused (message names the file). For tests.
+  void fileLoaded(bool ok, const QString& message);
+
+ public Q_SLOTS:
+  void showEnvironment();  // reads the viewport's environment into the controls
+
+ private:
+  void applyToViewport();
+  void sourceChosen(int index);
+  void chooseFile();
+  // The combo's item for a file, added once (after the built-ins, before "File…").
+  int fileItem(const QString& path);
+
+  ViewportWidget* m_viewport;
+  BackgroundTask* m_loader;
+  QComboBox* m_source;
+  QDoubleSpinBox* m_intensity;
+  QSlider* m_rotation;
+  QLabel* m_rotationLabel;
+  QComboBox* m_background;
+  int m_shownIndex = 0;  // the source item shown, to go back to when a file is refused
+};
+
+}  // namespace relief::ui::inline panels
