@@ -386,6 +386,70 @@ TEST(Cli, PbrShadingWritesUnclampedLinearRadianceToExr) {
               core::loadImage(folder + "/exposed.exr").value());
 }
 
+// The environment options: image-based light is linear in --environment-intensity (the EXR at
+// 0.5 is half the EXR at 1, with the directional light off); --background environment shows the
+// overcast sky behind the material (far above the plain gradient's 0.05); a missing or unusable
+// file stops the command naming it, bad values are usage errors.
+TEST(Cli, EnvironmentOptionsLightAndShowTheEnvironment) {
+  const std::string folder = scratchFolder();
+  const auto render = [&](const std::string& out, const QStringList& extra) {
+    return runCli(QStringList{QStringLiteral("render"), q(samplePreset("bricks")),
+                              QStringLiteral("--mesh"), QStringLiteral("sphere"),
+                              QStringLiteral("--shading"), QStringLiteral("pbr"),
+                              QStringLiteral("--size"), QStringLiteral("64x64"),
+                              QStringLiteral("--out"), q(out)} +
+                  extra);
+  };
+  const QStringList sky = {QStringLiteral("--environment"), QStringLiteral("sky"),
+                           QStringLiteral("--light-intensity"), QStringLiteral("0")};
+  ASSERT_EQ(render(folder + "/full.exr", sky).exitCode, 0);
+  ASSERT_EQ(
+      render(folder + "/half.exr",
+             sky + QStringList{QStringLiteral("--environment-intensity"), QStringLiteral("0.5")})
+          .exitCode,
+      0);
+  const core::Image full = core::loadImage(folder + "/full.exr").value();
+  const core::Image half = core::loadImage(folder + "/half.exr").value();
+  float brightest = 0.0f, worst = 0.0f;
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      brightest = std::max(brightest, full.at(x, y, 1));
+      worst = std::max(worst, std::abs(half.at(x, y, 1) - 0.5f * full.at(x, y, 1)));
+    }
+  }
+  EXPECT_GT(brightest, 0.1f);
+  EXPECT_LT(worst, 1e-3f * brightest);
+
+  // Level, the top of the picture looks 20 degrees up: the sky there is (1 + 2 sin 20) / 3 of
+  // the zenith's radiance, 0.56, sRGB 0.77.
+  const QStringList level = sky + QStringList{QStringLiteral("--pitch"), QStringLiteral("0")};
+  ASSERT_EQ(render(folder + "/plain.png", level).exitCode, 0);
+  ASSERT_EQ(render(folder + "/sky.png", level + QStringList{QStringLiteral("--background"),
+                                                            QStringLiteral("environment")})
+                .exitCode,
+            0);
+  EXPECT_LT(core::loadImage(folder + "/plain.png").value().at(1, 1, 1), 0.3f);
+  EXPECT_GT(core::loadImage(folder + "/sky.png").value().at(1, 1, 1), 0.6f);
+
+  const std::string missing = folder + "/nowhere.exr";
+  CliRun run = render(folder + "/x.png", {QStringLiteral("--environment"), q(missing)});
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
+  const std::string square = folder + "/square.exr";
+  ASSERT_TRUE(core::saveImage(core::Image(8, 8, 3), square, core::SampleFormat::Half).ok());
+  run = render(folder + "/x.png", {QStringLiteral("--environment"), q(square)});
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find(square), std::string::npos) << run.err;
+  run =
+      render(folder + "/x.png", {QStringLiteral("--environment-intensity"), QStringLiteral("20")});
+  EXPECT_EQ(run.exitCode, 2) << run.err;
+  run = render(folder + "/x.png", {QStringLiteral("--background"), QStringLiteral("starfield")});
+  EXPECT_EQ(run.exitCode, 2) << run.err;
+  EXPECT_NE(run.err.find("blurred"), std::string::npos) << run.err;
+  run = render(folder + "/x.png", {QStringLiteral("--light-intensity"), QStringLiteral("-1")});
+  EXPECT_EQ(run.exitCode, 2) << run.err;
+}
+
 TEST(Cli, ErrorViewPrintsTheErrorAgainstTheExactTrace) {
   const std::string out = scratchFolder() + "/error.png";
   CliRun run = runCli({QStringLiteral("render"), q(samplePreset("tiles")), QStringLiteral("--view"),

@@ -75,6 +75,12 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   preset.view.light = light;
   preset.view.display = DisplayTransform{1.5f, ToneMapper::PbrNeutral};
   preset.view.mesh = "torus";
+  Environment environment;
+  environment.source = "sky";
+  environment.intensity = 2.5f;
+  environment.rotationDeg = -30.0f;
+  environment.background = Background::Blurred;
+  preset.view.environment = environment;
   // Keys from a future tool, at every level.
   preset.preserved.insert(QStringLiteral("pipelineTag"), QStringLiteral("hero-asset"));
   QJsonObject maps = preset.preserved.value(QStringLiteral("maps")).toObject();
@@ -98,6 +104,7 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   EXPECT_EQ(again.view.camera->target, camera.target);
   EXPECT_EQ(again.view.light->color, light.color);
   EXPECT_EQ(again.view.display, preset.view.display);
+  EXPECT_EQ(again.view.environment, preset.view.environment);
   EXPECT_EQ(again.view.mesh, "torus");
   for (MapSlot slot : kAllMapSlots) {
     ASSERT_EQ(again.material.hasMap(slot), preset.material.hasMap(slot));
@@ -164,7 +171,9 @@ TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
                 "                  \"heightScale\": 1e300, \"normalYDown\": 3},"
                 " \"view\": {\"camera\": {\"pitch\": \"high\", \"distance\": -4},"
                 "            \"light\": {\"color\": [1, 2]},"
-                "            \"display\": {\"exposure\": 40, \"toneMapping\": \"filmic\"}}}");
+                "            \"display\": {\"exposure\": 40, \"toneMapping\": \"filmic\"},"
+                "            \"environment\": {\"source\": \"sky\", \"intensity\": 99,"
+                "                            \"background\": \"starfield\"}}}");
   Result<LoadedPreset> loaded = loadPreset(path);
   ASSERT_TRUE(loaded.ok()) << loaded.error();
   const Material& material = loaded->preset.material;
@@ -180,7 +189,7 @@ TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
   for (const char* mention :
        {"missing_normal.png", "warp-drive", "tiling", "specular", "bogus", "heightScale",
         "normalYDown", "zip", "view.camera.pitch", "view.camera.distance", "view.light.color",
-        "view.display.exposure", "filmic"}) {
+        "view.display.exposure", "filmic", "view.environment.intensity", "starfield"}) {
     EXPECT_NE(all.find(mention), std::string::npos) << mention << " not in:\n" << all;
   }
 }

@@ -2,11 +2,14 @@
 // each must change the next frame (checked on the grabbed framebuffer), and nothing redraws
 // when nothing changed.
 #include "core/image/ColorSpace.h"
+#include "core/image/ImageIO.h"
 #include "renderer/ImageConversion.h"
+#include "support/DialogAnswerer.h"
 #include "support/ImageCompare.h"
 #include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/document/MaterialDocument.h"
+#include "ui/panels/EnvironmentPanel.h"
 #include "ui/panels/LightPanel.h"
 #include "ui/panels/ParameterPanel.h"
 #include "ui/panels/ParameterSlider.h"
@@ -192,6 +195,71 @@ TEST_F(ViewportControls, LightControlsMoveTheLight) {
   QTest::mouseMove(viewport(), centre + QPoint(60, 0));
   QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, centre + QPoint(60, 0));
   EXPECT_NE(light->azimuthSlider()->value(), azimuth);
+}
+
+// The environment controls: each built-in, the intensity, the rotation and the backgrounds
+// change the frame of a pbr material; a file that is no environment is refused by name in a
+// message box and leaves the environment as it was; a good EXR is shown and offered again.
+TEST_F(ViewportControls, EnvironmentControlsChangeThePbrFrame) {
+  document()->setParameter(ParamId::Shading, double(int(core::ShadingModel::Pbr)));
+  ui::EnvironmentPanel* panel = m_window->lightPanel()->environmentPanel();
+  QComboBox* sources = panel->sourceBox();
+  core::Image previous = grabbed();
+  const auto expectChange = [&](const char* what) {
+    core::Image next = grabbed();
+    EXPECT_TRUE(frameChanged(previous, next)) << what;
+    previous = std::move(next);
+  };
+  for (int i = 0; i < sources->count(); ++i) {
+    const QString name = sources->itemData(i).toString();
+    if (name.isEmpty() || name == QString::fromStdString(viewport()->view().environment.source))
+      continue;  // "File…", or the one shown
+    sources->setCurrentIndex(i);
+    Q_EMIT sources->activated(i);
+    EXPECT_EQ(viewport()->view().environment.source, name.toStdString());
+    expectChange(qPrintable(name));
+  }
+  // Back to the studio, whose light has a direction (the uniform white has none to rotate).
+  sources->setCurrentIndex(sources->findData(QStringLiteral("studio")));
+  Q_EMIT sources->activated(sources->currentIndex());
+  expectChange("studio");
+  panel->intensityBox()->setValue(2.0);
+  expectChange("intensity");
+  panel->rotationSlider()->setValue(90);
+  expectChange("rotation");
+  for (int i = 0; i < panel->backgroundBox()->count(); ++i) {
+    if (i == panel->backgroundBox()->currentIndex())
+      continue;
+    panel->backgroundBox()->setCurrentIndex(i);
+    expectChange(qPrintable(panel->backgroundBox()->currentText()));
+  }
+  EXPECT_EQ(viewport()->viewState().environment->rotationDeg, 90.0f);  // presets save it
+
+  // A square EXR is not an equirectangular map: refused, the environment kept.
+  const core::Environment kept = viewport()->view().environment;
+  const std::string square = scratchFolder() + "/square.exr";
+  core::Image pixels(16, 16, 3);
+  ASSERT_TRUE(core::saveImage(pixels, square, core::SampleFormat::Half).ok());
+  DialogAnswerer answerer(QStringLiteral("OK"));
+  QSignalSpy loaded(panel, &ui::EnvironmentPanel::fileLoaded);
+  panel->loadFile(QString::fromStdString(square));
+  ASSERT_TRUE(loaded.wait(10000));
+  EXPECT_FALSE(loaded.at(0).at(0).toBool());
+  EXPECT_TRUE(loaded.at(0).at(1).toString().contains(QString::fromStdString(square)));
+  EXPECT_EQ(answerer.answered(), 1);
+  EXPECT_EQ(viewport()->view().environment, kept);
+
+  const std::string good = scratchFolder() + "/good.exr";
+  core::Image wide(32, 16, 3);
+  for (int x = 0; x < 32; ++x)
+    wide.at(x, 4, 0) = 8.0f;
+  ASSERT_TRUE(core::saveImage(wide, good, core::SampleFormat::Half).ok());
+  panel->loadFile(QString::fromStdString(good));
+  ASSERT_TRUE(loaded.wait(10000));
+  EXPECT_TRUE(loaded.at(1).at(0).toBool());
+  EXPECT_EQ(viewport()->view().environment.source, good);
+  EXPECT_GE(sources->findData(QString::fromStdString(good)), 0);
+  expectChange("file");
 }
 
 TEST_F(ViewportControls, MeshesAndTheSplitComparisonChangeTheFrame) {
