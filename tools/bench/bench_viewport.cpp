@@ -4,8 +4,9 @@
 // CPU clock (GL timer queries report nonsense on llvmpipe; PLATFORM.md), takes the median of
 // several runs and prints each row's ratio to `normal` for the same view, measured in the same run.
 //
-// A second table times the shading models (classic Blinn-Phong, pbr metallic-roughness) on the
-// same techniques and views.
+// A second table times the shading models (classic Blinn-Phong, pbr metallic-roughness with the
+// studio environment's image-based light) on the same techniques and views, and the bench prints
+// how long prefiltering an environment takes (once per environment change, never per frame).
 //
 // The quadtree's and cone's rows include nothing of building their pyramid and cone map (once
 // per height map, not per frame); the bench prints those builds' times for a 4096x4096 map after
@@ -14,6 +15,7 @@
 // Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5]
 #include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/shading/EnvironmentMaps.h"
 #include "core/tracing/ConeMap.h"
 #include "core/tracing/MaxMipPyramid.h"
 #include "renderer/MaterialRenderer.h"
@@ -153,11 +155,19 @@ int main(int argc, char* argv[]) {
   measure(shadowed, "8/32", "soft, 16");
 
   // Shading models: the same technique and view under classic and pbr (issue 12: pbr at most
-  // 1.3x classic), measured in this run, interleaved so drift in the machine's speed hits both.
+  // 1.3x classic). This machine's speed drifts by tens of percent within a minute, so each cell
+  // alternates the two `kShadingRounds` times and reports the median of the rounds' ratios (and
+  // the median times), rather than the ratio of two medians taken seconds apart.
+  constexpr int kShadingRounds = 5;
   struct ShadingRow {
     std::string label;
     double classic[3];
     double pbr[3];
+    double ratio[3];
+  };
+  const auto median = [](std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
   };
   std::vector<ShadingRow> shadingRows;
   core::Material pomPlain = base;
@@ -168,12 +178,19 @@ int main(int argc, char* argv[]) {
                                         {"pom 8/32", pomPlain},
                                         {"pom 8/32, soft shadows", shadowed},
                                         {"quadtree", quadtree}}) {
-    ShadingRow row{label, {}, {}};
+    ShadingRow row{label, {}, {}, {}};
     core::Material pbr = material;
     pbr.setParameter(core::ParamId::Shading, double(int(core::ShadingModel::Pbr)));
     for (int v = 0; v < 3; ++v) {
-      row.classic[v] = timeFrame(material, views[v]);
-      row.pbr[v] = timeFrame(pbr, views[v]);
+      std::vector<double> classicTimes, pbrTimes, ratios;
+      for (int round = 0; round < kShadingRounds; ++round) {
+        classicTimes.push_back(timeFrame(material, views[v]));
+        pbrTimes.push_back(timeFrame(pbr, views[v]));
+        ratios.push_back(pbrTimes.back() / classicTimes.back());
+      }
+      row.classic[v] = median(classicTimes);
+      row.pbr[v] = median(pbrTimes);
+      row.ratio[v] = median(ratios);
     }
     shadingRows.push_back(row);
     std::fprintf(stderr, ".");
@@ -200,13 +217,14 @@ int main(int argc, char* argv[]) {
     std::printf(" %17.2f |\n", row.milliseconds[0] / row.milliseconds[2]);
   }
   std::printf(
-      "\n| shading: pbr / classic | head-on ms | 45 deg ms | grazing ms |\n"
-      "|---|---|---|---|\n");
+      "\n| shading: pbr (studio light) / classic, median of %d alternating rounds | head-on ms "
+      "| 45 deg ms | grazing ms |\n"
+      "|---|---|---|---|\n",
+      kShadingRounds);
   for (const ShadingRow& row : shadingRows) {
     std::printf("| %s |", row.label.c_str());
     for (int v = 0; v < 3; ++v)
-      std::printf(" %.1f / %.1f (%.2fx) |", row.pbr[v], row.classic[v],
-                  row.pbr[v] / row.classic[v]);
+      std::printf(" %.1f / %.1f (%.2fx) |", row.pbr[v], row.classic[v], row.ratio[v]);
     std::printf("\n");
   }
   // The quadtree's pyramid and the cone technique's cone map for a 4096x4096 height map, built
@@ -233,6 +251,31 @@ int main(int argc, char* argv[]) {
         "\n4096x4096 height map (cobblestones tiled 4x4): quadtree pyramid %.1f ms (median of "
         "5), cone map %.0f ms (median of 3; median cone ratio %.1f texels per unit height)\n",
         pyramidMs, conesMs, double(ratios[ratios.size() / 2]));
+  }
+  // Prefiltering each built-in, and a 4096 x 2048 environment (the working width files are
+  // resized to; the studio made at that size): upload, mips, the GGX chain and the irradiance.
+  {
+    std::printf("\nenvironment prefiltering (upload, mips, GGX chain, irradiance; median of 3):");
+    std::vector<std::pair<std::string, std::shared_ptr<const core::Image>>> sources;
+    for (core::BuiltInEnvironment builtIn : core::allBuiltInEnvironments()) {
+      const std::string name(core::builtInEnvironmentName(builtIn));
+      sources.emplace_back(name, core::environmentRadiance(name).value());
+    }
+    sources.emplace_back("4096x2048",
+                         std::make_shared<const core::Image>(
+                             core::makeBuiltInEnvironment(core::BuiltInEnvironment::Studio, 2048)));
+    for (const auto& [name, radiance] : sources) {
+      renderer::EnvironmentLight& light = materialRenderer.environmentLight();
+      std::vector<double> times;
+      for (int i = 0; i < 3; ++i) {
+        light.prepare(std::make_shared<const core::Image>(*radiance));  // a new image: prefilters
+        times.push_back(light.lastPrefilterMilliseconds());
+      }
+      std::sort(times.begin(), times.end());
+      std::printf(" %s (%dx%d) %.0f ms;", name.c_str(), radiance->width(), radiance->height(),
+                  times[1]);
+    }
+    std::printf("\n");
   }
   materialRenderer.releaseResources();
   context.doneCurrent();
