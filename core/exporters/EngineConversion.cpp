@@ -2,6 +2,7 @@
 #include "core/exporters/EngineConversion.h"
 
 #include "core/generators/ChannelPacking.h"
+#include "core/shading/Brdf.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,11 +22,6 @@ Image withGreenInverted(const Image& normals) {
 }
 
 }  // namespace
-
-double roughnessFromShininess(double shininess) {
-  const double alphaSquared = 2.0 / (std::max(shininess, 0.0) + 2.0);
-  return std::clamp(std::pow(alphaSquared, 0.25), 0.0, 1.0);
-}
 
 bool shadesPbr(const Material& material) {
   return ShadingModel(int(material.parameter(ParamId::Shading))) == ShadingModel::Pbr;

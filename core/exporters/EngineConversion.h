@@ -20,9 +20,9 @@ struct EngineExportResult {
   std::vector<std::string> notes;  // for the user: the dialog and the CLI's "note:" lines
 };
 
-double roughnessFromShininess(double shininess);
 // The metallic-roughness constants the viewport shows: under pbr shading the metallic and
-// roughness parameters, under classic the Blinn-Phong equivalent (roughnessFromShininess) and
+// roughness parameters, under classic the Blinn-Phong equivalent (core/shading/Brdf.h's
+// roughnessFromShininess) and
 // no metal.
 double exportedMetallic(const Material& material);
 double exportedRoughness(const Material& material);

@@ -1,10 +1,11 @@
 // Preset files; see MaterialPreset.h.
 #include "core/material/MaterialPreset.h"
-#include "core/base/InputFile.h"
-#include "core/compression/MapFile.h"
 
 #include "core/base/AtomicFile.h"
+#include "core/base/InputFile.h"
+#include "core/compression/MapFile.h"
 #include "core/image/ImageIO.h"
+#include "core/shading/Brdf.h"
 
 #include <QDir>
 #include <QFile>
@@ -280,11 +281,27 @@ void readView(const QJsonObject& object, const std::string& path, ViewState& vie
                                        presetDir, problems);
 }
 
-// Brings an older file's JSON to the current version. Version 1 has no compression choices
-// and no view; nothing in it changed meaning, so only the version number moves.
+// Brings an older file's JSON to the current version.
+// - Version 1 has no compression choices and no view; nothing in it changed meaning.
+// - Version 2's default shading was classic, version 3's is pbr: a version 2 file without a
+//   shading keeps classic, so it looks as it did. One without a roughness gets the one whose
+//   GGX lobe matches its Blinn-Phong highlight: switching it to pbr keeps the highlight's width
+//   (roughnessFromShininess). Specular (the highlight's strength) has no metallic-roughness
+//   counterpart (a dielectric reflects 4% at normal incidence) and stays for classic shading.
 QJsonObject migrate(QJsonObject root, int fromVersion) {
-  if (fromVersion < 2)
-    root.insert(QStringLiteral("version"), 2);
+  if (fromVersion < 3) {
+    QJsonObject parameters = root.value(QStringLiteral("parameters")).toObject();
+    if (!parameters.contains(QStringLiteral("shading")))
+      parameters.insert(QStringLiteral("shading"), QStringLiteral("classic"));
+    if (!parameters.contains(QStringLiteral("roughness"))) {
+      const double shininess = parameters.value(QStringLiteral("shininess"))
+                                   .toDouble(parameterDefault(ParamId::Shininess));
+      const double roughness = roughnessFromShininess(shininess);
+      parameters.insert(QStringLiteral("roughness"), std::round(roughness * 1000.0) / 1000.0);
+    }
+    root.insert(QStringLiteral("parameters"), parameters);
+  }
+  root.insert(QStringLiteral("version"), kPresetVersion);
   return root;
 }
 

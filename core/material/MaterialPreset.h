@@ -20,8 +20,10 @@ namespace relief::core::inline material {
 
 constexpr std::string_view kPresetFormatName = "relief-material";
 // 1: the first format (technique, parameters, maps). 2: adds per-map compression choices and
-// the optional view (camera, light, mesh). Version 1 files are read and written back as 2.
-constexpr int kPresetVersion = 2;
+// the optional view (camera, light, mesh). 3: pbr becomes the default shading and the view
+// gains its environment; older files are migrated on load (migrate() in the .cpp) and written
+// back as 3.
+constexpr int kPresetVersion = 3;
 // Presets are small JSON files (a few KiB); anything larger is refused before it is read.
 constexpr qint64 kMaxPresetBytes = qint64(16) << 20;
 

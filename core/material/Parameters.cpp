@@ -115,11 +115,11 @@ std::vector<ParameterSpec> buildTable() {
         "Read the normal map's green channel as Y pointing down (DirectX/Unreal convention) "
         "instead of up (OpenGL/Blender/Godot/glTF).")),
     parameter(ParamId::Shading, kSurface, {ParamUse::Always, ""}, choiceOption(
-        "shading", "Shading", {"classic", "pbr"}, 0,
-        "classic: Blinn-Phong under the light with a flat ambient term (the reference "
-        "documents' look). pbr: the glTF 2.0 metallic-roughness BRDF (GGX, Smith "
-        "height-correlated visibility, Schlick Fresnel, Lambert diffuse) under the light and "
-        "a uniform environment of the ambient's radiance, as engines shade.")),
+        "shading", "Shading", {"classic", "pbr"}, 1,
+        "pbr: the glTF 2.0 metallic-roughness BRDF (GGX, Smith height-correlated visibility, "
+        "Schlick Fresnel, Lambert diffuse) under the light and the environment's image-based "
+        "light, as engines shade. classic: Blinn-Phong under the light with a flat ambient "
+        "term (the reference documents' look).")),
     parameter(ParamId::Metallic, kSurface, {ParamUse::Pbr, "uMetallic"}, numberOption(
         "metallic", "Metallic", "0 dielectric .. 1 metal", 0.0, 1.0, 0.0, 2,
         "glTF metallicFactor: 0 is a dielectric (plastic, stone, wood) whose colour is its "

@@ -8,6 +8,11 @@
 
 namespace relief::core::inline shading {
 
+double roughnessFromShininess(double shininess) {
+  const double alphaSquared = 2.0 / (std::max(shininess, 0.0) + 2.0);
+  return std::clamp(std::pow(alphaSquared, 0.25), 0.0, 1.0);
+}
+
 float ggxDistribution(float alpha, float nDotH) {
   if (nDotH <= 0.0f)
     return 0.0f;

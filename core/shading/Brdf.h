@@ -13,6 +13,11 @@ namespace relief::core::inline shading {
 constexpr float kPi = 3.14159265358979323846f;
 constexpr float kDielectricF0 = 0.04f;  // ((1.5 - 1) / (1.5 + 1))^2
 
+// The perceptual roughness whose GGX lobe matches a Blinn-Phong exponent's highlight:
+// alpha^2 = 2 / (shininess + 2) (Walter et al. 2007, the Beckmann-Phong correspondence), and
+// roughness = sqrt(alpha). Exports of classic materials and the preset migration use it.
+double roughnessFromShininess(double shininess);
+
 // D: alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2), for N.H > 0 (0 otherwise).
 float ggxDistribution(float alpha, float nDotH);
 // V = G / (4 N.L N.V), height-correlated Smith for GGX:

@@ -1,5 +1,6 @@
 #include "HostileCorpus.h"
 
+#include "core/material/MaterialPreset.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -545,15 +546,15 @@ void writePresets(CorpusWriter& w) {
   w.file(k, "format-wrong.relief", R"({"format": "relief-materia", "version": 2})",
          "a wrong format name");
   w.file(k, "version-missing.relief", presetJson(R"("name": "x")"), "no version");
-  for (const auto& [name, version] :
-       std::vector<std::pair<std::string, std::string>>{{"string", "\"2\""},
-                                                        {"zero", "0"},
-                                                        {"negative", "-1"},
-                                                        {"fraction", "1.5"},
-                                                        {"next", "3"},
-                                                        {"1e308", "1e308"},
-                                                        {"2pow63", "9223372036854775808"},
-                                                        {"bool", "true"}}) {
+  for (const auto& [name, version] : std::vector<std::pair<std::string, std::string>>{
+           {"string", "\"2\""},
+           {"zero", "0"},
+           {"negative", "-1"},
+           {"fraction", "1.5"},
+           {"next", std::to_string(relief::core::kPresetVersion + 1)},
+           {"1e308", "1e308"},
+           {"2pow63", "9223372036854775808"},
+           {"bool", "true"}}) {
     w.file(k, "version-" + name + ".relief", presetJson("\"version\": " + version),
            "version " + version);
   }

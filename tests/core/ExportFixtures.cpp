@@ -46,6 +46,8 @@ Preset syntheticPreset() {
   preset.material.setParameter(ParamId::MaxSamples, 48);
   preset.material.setParameter(ParamId::Tiling, 2.0);
   preset.material.setParameter(ParamId::NormalYDown, 1.0);
+  // Classic shading: the exports convert its shininess (roughness (2/4)^(1/4)).
+  preset.material.setParameter(ParamId::Shading, double(int(ShadingModel::Classic)));
   preset.material.setParameter(ParamId::Shininess, 2.0);
   preset.material.setParameter(ParamId::NormalStrength, 0.8);
   return preset;

@@ -11,6 +11,7 @@
 #include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/shading/Brdf.h"
 #include "support/GltfValidator.h"
 #include "support/TestPaths.h"
 

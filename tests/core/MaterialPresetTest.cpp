@@ -1,6 +1,6 @@
 // Presets: the bundled samples load whole; save -> load -> save is exact and keeps keys this
-// program does not know; bad files are refused or reported with the file's name; version 1
-// migrates; a failed save leaves the old file byte for byte; maps made in the editor are
+// program does not know; bad files are refused or reported with the file's name; versions 1
+// and 2 migrate; a failed save leaves the old file byte for byte; maps made in the editor are
 // written beside the preset.
 #include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -215,6 +216,38 @@ TEST(MaterialPreset, VersionOneMigrates) {
                 .value(QStringLiteral("specular"))
                 .toDouble(),
             0.5);
+}
+
+// Version 2's default shading was classic: a version 2 file that does not name one keeps
+// classic, and gets the roughness whose GGX lobe has its Blinn-Phong highlight's width,
+// alpha^2 = 2 / (n + 2) (Walter et al. 2007): n = 62 gives alpha^2 = 1/32, roughness
+// 32^-0.25 = 0.420. A file that names both keeps them.
+TEST(MaterialPreset, VersionTwoKeepsClassicShadingAndGainsAMatchingRoughness) {
+  const std::string folder = freshFolder("migrate2");
+  const std::string path = folder + "/old.relief";
+  writeText(path,
+            "{\"format\": \"relief-material\", \"version\": 2, \"name\": \"old\","
+            " \"technique\": \"pom\", \"maps\": {},"
+            " \"parameters\": {\"shininess\": 62, \"specular\": 0.5}}");
+  Result<LoadedPreset> loaded = loadPreset(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_EQ(loaded->fileVersion, 2);
+  EXPECT_TRUE(loaded->warnings.empty());
+  const Material& material = loaded->preset.material;
+  EXPECT_EQ(material.parameter(ParamId::Shading), double(ShadingModel::Classic));
+  EXPECT_NEAR(material.parameter(ParamId::Roughness), std::pow(32.0, -0.25), 1e-3);
+  EXPECT_EQ(material.parameter(ParamId::Specular), 0.5);
+
+  writeText(path,
+            "{\"format\": \"relief-material\", \"version\": 2, \"technique\": \"pom\","
+            " \"maps\": {}, \"parameters\": {\"shading\": \"pbr\", \"roughness\": 0.25}}");
+  loaded = loadPreset(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_EQ(loaded->preset.material.parameter(ParamId::Shading), double(ShadingModel::Pbr));
+  EXPECT_EQ(loaded->preset.material.parameter(ParamId::Roughness), 0.25);
+
+  // A new material shades pbr.
+  EXPECT_EQ(Material().parameter(ParamId::Shading), double(ShadingModel::Pbr));
 }
 
 TEST(MaterialPreset, AFailedSaveLeavesThePreviousFileByteForByte) {

@@ -72,9 +72,14 @@ TEST_F(CompressedRender, NativeUploadsRenderAsCoreDecodingDoes) {
     // moves a few pixels by a level or two and the mean by far less than one. Heights are
     // the exception for the maximum: the drivers' BC4 decoding differs from ours by a step
     // (CompressedSamplingTest), and a step moves a parallax ray's hit across a brick edge.
+    // Normals come next: under pbr the studio's reflection has the soft boxes' hard edges,
+    // and the small turn of a normal rebuilt after filtering moves a pixel across one.
     EXPECT_LT(difference.meanError, 0.6 / 255.0)
         << core::textureFormatInfo(format).name << " in " << core::mapSlotName(slot);
-    EXPECT_LT(difference.maxError, slot == MapSlot::Height ? 0.4 : 24.0 / 255.0)
+    const double maxError = slot == MapSlot::Height   ? 0.4
+                            : slot == MapSlot::Normal ? 48.0 / 255.0
+                                                      : 24.0 / 255.0;
+    EXPECT_LT(difference.maxError, maxError)
         << core::textureFormatInfo(format).name << " in " << core::mapSlotName(slot);
   }
 }

@@ -38,6 +38,9 @@ class Lighting : public OffscreenTest {
     const glm::vec3 encoded = glm::normalize(tangentNormal) * 0.5f + 0.5f;
     material.setMap(MapSlot::Normal, constantImage(3, {encoded.x, encoded.y, encoded.z}));
     material.setMap(MapSlot::Color, constantImage(3, {albedoSrgb, albedoSrgb, albedoSrgb}));
+    // Classic shading: Lambert under the light plus the flat ambient, the formula the tests
+    // below expect (PbrShadingTest covers pbr's).
+    material.setParameter(ParamId::Shading, double(core::ShadingModel::Classic));
     material.setParameter(ParamId::Specular, 0.0);
     material.setParameter(ParamId::NormalYDown, yDown ? 1.0 : 0.0);
     offscreen().setMaterial(material);

@@ -133,7 +133,8 @@ TEST_F(SelfShadow, StrengthZeroEqualsShadowsOff) {
   auto full = offscreen().render(settings, 160, 160);
   ASSERT_TRUE(zero.ok() && off.ok() && full.ok());
   EXPECT_EQ(compareImages(zero.value(), off.value()).maxError, 0.0);
-  EXPECT_GT(compareImages(full.value(), off.value()).maxError, 0.2);  // and shadows do show
+  // And shadows do show: the light's share of a shadowed pixel goes (the environment's stays).
+  EXPECT_GT(compareImages(full.value(), off.value()).maxError, 0.15);
 }
 
 TEST_F(SelfShadow, SoftShadowsHaveAPenumbraThatGrowsWithTheLightSize) {
