@@ -417,6 +417,7 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
   program.setUniformValue("uHeightMap", kFirstMapUnit + int(MapSlot::Height));
   program.setUniformValue("uOcclusionMap", kFirstMapUnit + int(MapSlot::AmbientOcclusion));
   program.setUniformValue("uRoughnessMap", kFirstMapUnit + int(MapSlot::Roughness));
+  program.setUniformValue("uMetallicMap", kFirstMapUnit + int(MapSlot::Metallic));
 }
 
 std::pair<int, int> MaterialRenderer::reducedSize(int width, int height, float scale) {

@@ -19,7 +19,8 @@ using core::Image;
 using core::MapSlot;
 
 // The value an empty slot samples as: mid-grey colour, a flat normal, the top surface,
-// no occlusion, no roughness.
+// no occlusion, no roughness (classic reads 0 as "the shininess"), and a metallic texel of 1
+// (pbr multiplies the metallic factor by it).
 std::shared_ptr<const Image> neutralImage(MapSlot slot) {
   auto image = std::make_shared<Image>(1, 1, 4, core::mapSlotColorSpace(slot));
   float* texel = image->pixel(0, 0);
@@ -35,6 +36,7 @@ std::shared_ptr<const Image> neutralImage(MapSlot slot) {
       break;
     case MapSlot::Height:
     case MapSlot::AmbientOcclusion:
+    case MapSlot::Metallic:  // pbr multiplies the metallic factor by it
       std::fill(texel, texel + 3, 1.0f);
       break;
     default:

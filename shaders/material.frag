@@ -100,6 +100,11 @@ void main() {
   surface.albedo = sampleMap(uColorMap, visible.uv, dx, dy).rgb;  // sRGB texture: linear
   surface.occlusion = sampleMap(uOcclusionMap, visible.uv, dx, dy).r;
   surface.roughness = sampleMap(uRoughnessMap, visible.uv, dx, dy).r;
+#ifdef SHADING_PBR
+  surface.metallic = sampleMap(uMetallicMap, visible.uv, dx, dy).r;
+#else
+  surface.metallic = 0.0;
+#endif
 
 #if DEBUG_VIEW == VIEW_SHADING
 #ifdef SHADING_PBR

@@ -25,9 +25,9 @@ QString generatorList() {
   return text;
 }
 
-// pack's extras on the command line: maps that no slot holds yet (metallic) or that only the
-// channel terms use (color), and the channel terms; pack's own inputs come from core's table.
-constexpr const char* kPackExtraMaps[] = {"color", "metallic"};
+// pack's extras on the command line: a map that only the channel terms use (color), and the
+// channel terms; pack's own inputs come from core's table.
+constexpr const char* kPackExtraMaps[] = {"color"};
 constexpr const char* kChannelOptions[] = {"r", "g", "b", "a"};
 
 // The generator's options: its inputs, --out, its OptionSpecs (core's table) and pack's swizzle.
@@ -178,7 +178,7 @@ void reportGenerated(const QCommandLineParser& parser, std::string_view generato
   printJson(object);
 }
 
-// pack with channel terms or maps only the terms can name (--color, --metallic): any map or
+// pack with channel terms or maps only the terms can name (--color): any map or
 // constant into any channel, starting from --layout's terms. Returns nullopt when none of those
 // is given (core's pack generator runs, with --layout and the table's inputs).
 std::optional<int> runChannelPack(const QCommandLineParser& parser,

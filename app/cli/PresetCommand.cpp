@@ -2,10 +2,13 @@
 #include "PresetCommand.h"
 
 #include "CliCommon.h"
+#include "core/image/Image.h"
 #include "core/material/MaterialPreset.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
+
+#include <cctype>
 
 namespace relief::cli {
 namespace {
@@ -49,6 +52,9 @@ QJsonObject presetJson(const QString& path, const core::LoadedPreset& loaded) {
                       {QStringLiteral("width"), map.image->width()},
                       {QStringLiteral("height"), map.image->height()},
                       {QStringLiteral("channels"), map.image->channels()}};
+    if (map.sourceChannel >= 0)
+      entry.insert(QStringLiteral("channel"),
+                   QString(QChar::fromLatin1(core::channelLetter(map.sourceChannel))));
     if (const core::MapCompression& compression = loaded.preset.compression[std::size_t(slot)]) {
       entry.insert(
           QStringLiteral("compression"),
@@ -132,9 +138,15 @@ int info(const QString& path, bool json) {
     const core::MaterialMap& map = material.map(slot);
     if (!map.image)
       continue;
+    const QString source =
+        QString::fromStdString(map.sourcePath) +
+        (map.sourceChannel >= 0 ? QStringLiteral(" channel %1")
+                                      .arg(QChar::fromLatin1(char(
+                                          std::toupper(core::channelLetter(map.sourceChannel)))))
+                                : QString());
     text += QStringLiteral("  %1 %2 (%3x%4, %5 channel(s), %6 bit, %7)")
                 .arg(qstr(core::mapSlotName(slot)) + QLatin1Char(':'), -10)
-                .arg(QString::fromStdString(map.sourcePath))
+                .arg(source)
                 .arg(map.image->width())
                 .arg(map.image->height())
                 .arg(map.image->channels())

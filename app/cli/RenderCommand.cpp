@@ -9,6 +9,7 @@
 #include "core/image/ImageFileTypes.h"
 #include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
+#include "core/material/OrmTexture.h"
 #include "core/mesh/MeshImport.h"
 #include "core/mesh/MeshPrimitives.h"
 #include "core/tracing/UvErrorMap.h"
@@ -43,7 +44,7 @@ QString parameterHelp() {
 }
 
 // The option that gives a slot's map is the slot's name: --color, --normal, --height, --ao,
-// --roughness.
+// --roughness, --metallic.
 QString mapOptionName(core::MapSlot slot) {
   return qstr(core::mapSlotName(slot));
 }
@@ -83,6 +84,12 @@ CliOptions renderOptions() {
                                                       : QString()),
          {}});
   }
+  options.push_back({QStringLiteral("orm"),
+                     file,
+                     QStringLiteral("ORM texture: R ambient occlusion, G roughness, B metallic "
+                                    "(glTF, Unreal; Poly Haven's arm). Fills those three maps; "
+                                    "--ao, --roughness or --metallic given as well win."),
+                     {}});
   options.push_back({QStringLiteral("mesh"), QStringLiteral("name|file"),
                      enumNames(core::allPrimitiveShapes(), core::primitiveShapeName) +
                          QStringLiteral(", or a mesh file (OBJ, FBX, glTF, ...)."),
@@ -273,6 +280,18 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
     request.material = std::move(loaded->preset.material);
     request.presetView = loaded->preset.view;
   }
+  if (parser.isSet(QStringLiteral("orm"))) {
+    const QString path = parser.value(QStringLiteral("orm"));
+    core::Result<std::vector<core::ChannelMap>> maps = core::loadOrmTexture(path.toStdString());
+    if (!maps) {
+      printError(QString::fromStdString(maps.error()));
+      return kExitFailure;
+    }
+    for (core::ChannelMap& map : maps.value()) {
+      request.material.setMap(map.slot, std::make_shared<core::Image>(std::move(map.image)),
+                              QFileInfo(path).absoluteFilePath().toStdString(), map.channel);
+    }
+  }
   // A missing normal map is flat.
   for (core::MapSlot slot : core::kAllMapSlots) {
     if (!loadMapOption(parser, mapOptionName(slot), slot, request.material))
@@ -423,11 +442,11 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   }
   if (auto exit = parseOutput(parser, request))
     return exit;
-  const bool anyMap = parser.isSet(QStringLiteral("color")) ||
-                      parser.isSet(QStringLiteral("normal")) ||
-                      parser.isSet(QStringLiteral("height"));
+  bool anyMap = parser.isSet(QStringLiteral("orm"));
+  for (core::MapSlot slot : core::kAllMapSlots)
+    anyMap = anyMap || parser.isSet(mapOptionName(slot));
   if (positional.isEmpty() && !anyMap) {
-    printError(QStringLiteral("render needs a preset or maps (--color, --normal, --height)"));
+    printError(QStringLiteral("render needs a preset or maps (--color, --normal, --height, ...)"));
     return kExitUsage;
   }
   if (auto exit = loadMaterial(parser, request))

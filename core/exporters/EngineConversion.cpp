@@ -2,6 +2,7 @@
 #include "core/exporters/EngineConversion.h"
 
 #include "core/generators/ChannelPacking.h"
+#include "core/generators/ImageFilters.h"
 #include "core/shading/Brdf.h"
 
 #include <algorithm>
@@ -61,31 +62,66 @@ bool exportsParallax(const Material& material) {
   return material.technique() != Technique::Normal && material.hasMap(MapSlot::Height);
 }
 
+std::vector<std::optional<Image>> resizedToLargest(const std::vector<const Image*>& maps) {
+  int width = 0, height = 0;
+  for (const Image* map : maps) {
+    if (map && std::int64_t(map->width()) * map->height() > std::int64_t(width) * height) {
+      width = map->width();
+      height = map->height();
+    }
+  }
+  std::vector<std::optional<Image>> resized(maps.size());
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    if (maps[i] && (maps[i]->width() != width || maps[i]->height() != height))
+      resized[i] = resizeImage(*maps[i], width, height);
+  }
+  return resized;
+}
+
 std::optional<Image> packEngineMasks(const Material& material, std::string_view layoutName) {
   const PackLayout* layout = findPackLayout(layoutName);
   const Image* occlusion = material.image(MapSlot::AmbientOcclusion);
   const Image* roughness = material.image(MapSlot::Roughness);
-  if (layout == nullptr || (occlusion == nullptr && roughness == nullptr))
+  const Image* metallic = material.image(MapSlot::Metallic);
+  if (layout == nullptr || (occlusion == nullptr && roughness == nullptr && metallic == nullptr))
     return std::nullopt;
-  // The material's constant roughness, not the neutral 1, stands in for a missing map.
-  const double constantRoughness = exportedRoughness(material);
-  // Under pbr the viewport reads factor x map: bake the factor in.
-  std::optional<Image> scaledRoughness;
-  if (roughness && shadesPbr(material) && material.parameter(ParamId::Roughness) != 1.0) {
-    scaledRoughness = *roughness;
-    const float factor = float(material.parameter(ParamId::Roughness));
-    for (std::size_t i = 0; i < scaledRoughness->valueCount(); ++i)
-      scaledRoughness->data()[i] *= factor;
-    roughness = &*scaledRoughness;
-  }
+  const std::vector<std::optional<Image>> resized =
+      resizedToLargest({occlusion, roughness, metallic});
+  if (resized[0])
+    occlusion = &*resized[0];
+  if (resized[1])
+    roughness = &*resized[1];
+  if (resized[2])
+    metallic = &*resized[2];
+  // The viewport reads factor x map under pbr; engines' mask maps carry no factor, so it is
+  // baked in. Under classic a roughness map is the roughness itself and nothing is metal.
+  const auto baked = [](const Image* map, double factor) -> std::optional<Image> {
+    if (map == nullptr || factor == 1.0)
+      return std::nullopt;
+    Image scaled = *map;
+    for (std::size_t i = 0; i < scaled.valueCount(); ++i)
+      scaled.data()[i] *= float(factor);
+    return scaled;
+  };
+  const std::optional<Image> bakedRoughness =
+      baked(roughness, shadesPbr(material) ? material.parameter(ParamId::Roughness) : 1.0);
+  const std::optional<Image> bakedMetallic = baked(metallic, exportedMetallic(material));
+  if (bakedRoughness)
+    roughness = &*bakedRoughness;
+  if (bakedMetallic)
+    metallic = &*bakedMetallic;
   std::vector<NamedMap> maps;
   if (occlusion)
     maps.push_back({"ao", occlusion});
   if (roughness)
     maps.push_back({"roughness", roughness});
+  if (metallic)
+    maps.push_back({"metallic", metallic});
+  // The material's constants, not the maps' neutral values, stand in for missing maps.
+  const double constantRoughness = exportedRoughness(material);
   std::vector<std::string> terms;
   for (std::string_view term : layout->terms) {
-    if (term == "metallic.r")
+    if (metallic == nullptr && term == "metallic.r")
       terms.push_back(engineNumber(exportedMetallic(material)));
     else if (roughness == nullptr && term == "roughness.r")
       terms.push_back(engineNumber(constantRoughness));
@@ -98,7 +134,7 @@ std::optional<Image> packEngineMasks(const Material& material, std::string_view 
   resolved.terms.assign(terms.begin(), terms.end());
   Result<Image> packed = packChannels(maps, resolveLayoutTerms(resolved, maps));
   if (!packed)
-    return std::nullopt;  // the maps differ in size: the slots' loader already refuses that
+    return std::nullopt;  // not reached: the layouts' terms are valid and the sizes equal
   return std::move(packed).value();
 }
 

@@ -43,11 +43,16 @@ Image engineHeightMap(const Image& height, bool heightIsDepth);
 // height map.
 bool exportsParallax(const Material& material);
 
+// Maps that share one packed texture at the size of the largest of them: the slots may hold
+// maps of different sizes (an AO baked at 1K beside a 2K roughness). Element i is the resized
+// copy of maps[i], or nullopt when maps[i] is null or already that size.
+std::vector<std::optional<Image>> resizedToLargest(const std::vector<const Image*>& maps);
+
 // One of packLayouts()'s layouts ("orm", "unity-mask", "unity-metallic") filled from the
-// material's AO and roughness maps. A missing roughness map takes the material's constant
-// roughness (exportedRoughness), a missing AO map 1, metallic is exportedMetallic; under pbr
-// shading the roughness map is baked with its factor (engines' mask maps carry no factor).
-// nullopt when the material has neither map: the engine's constant factors then say it all.
+// material's AO, roughness and metallic maps. A missing roughness or metallic map takes the
+// material's constant (exportedRoughness, exportedMetallic), a missing AO map 1; the roughness
+// and metallic maps are baked with their factors (engines' mask maps carry no factor).
+// nullopt when the material has none of the maps: the engine's constants then say it all.
 std::optional<Image> packEngineMasks(const Material& material, std::string_view layoutName);
 
 // Stable 128-bit identifiers as 32 hex digits (Unity's asset GUIDs), from a name: exporting the

@@ -123,20 +123,33 @@ Result<std::string> exportGltf(const Preset& preset, const Mesh& mesh, const std
       return makeError(index.error());
     pbr.insert("baseColorTexture", QJsonObject{{"index", index.value()}});
   }
-  if (const Image* roughness = material.image(MapSlot::Roughness)) {
-    // glTF reads roughness from green and metalness from blue, each times its factor: blue 1
-    // lets metallicFactor through; under pbr the roughness factor multiplies the map as in the
-    // viewport, under classic the map is the roughness.
-    Image packed(roughness->width(), roughness->height(), 3);
+  const Image* roughness = material.image(MapSlot::Roughness);
+  const Image* metallic = material.image(MapSlot::Metallic);
+  if (roughness || metallic) {
+    // glTF reads roughness from green and metalness from blue, each times its factor, as the
+    // viewport does under pbr; a missing map is 1, which lets its factor through. Under
+    // classic a roughness map is the roughness itself (factor 1). One texture carries both,
+    // at the larger one's size.
+    const std::vector<std::optional<Image>> resized = resizedToLargest({roughness, metallic});
+    if (resized[0])
+      roughness = &*resized[0];
+    if (resized[1])
+      metallic = &*resized[1];
+    const Image& size = roughness ? *roughness : *metallic;
+    Image packed(size.width(), size.height(), 3);
+    const auto texel = [](const Image* map, std::size_t p) {
+      return map ? map->data()[p * std::size_t(map->channels())] : 1.0f;
+    };
     for (std::size_t p = 0; p < packed.pixelCount(); ++p) {
-      packed.data()[p * 3 + 1] = roughness->data()[p * std::size_t(roughness->channels())];
-      packed.data()[p * 3 + 2] = 1.0f;
+      packed.data()[p * 3 + 1] = texel(roughness, p);
+      packed.data()[p * 3 + 2] = texel(metallic, p);
     }
     auto index = addTexture(packed, "metallic_roughness", SampleFormat::UInt8);
     if (!index)
       return makeError(index.error());
     pbr.insert("metallicRoughnessTexture", QJsonObject{{"index", index.value()}});
-    pbr.insert("roughnessFactor", shadesPbr(material) ? exportedRoughness(material) : 1.0);
+    if (roughness && !shadesPbr(material))
+      pbr.insert("roughnessFactor", 1.0);
   }
   gltfMaterial.insert("pbrMetallicRoughness", pbr);
   if (const Image* normalMap = material.image(MapSlot::Normal)) {

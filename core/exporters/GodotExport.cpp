@@ -85,6 +85,10 @@ Result<EngineExportResult> exportGodot(const Preset& preset, const std::string& 
     if (Status s = addTexture(*roughness, "roughness", SampleFormat::UInt8); !s)
       return makeError(s.error());
   }
+  if (const Image* metallic = material.image(MapSlot::Metallic)) {
+    if (Status s = addTexture(*metallic, "metallic", SampleFormat::UInt8); !s)
+      return makeError(s.error());
+  }
 
   std::ostringstream tres;
   tres << "[gd_resource type=\"StandardMaterial3D\" load_steps=" << textures.size() + 1
@@ -96,12 +100,15 @@ Result<EngineExportResult> exportGodot(const Preset& preset, const std::string& 
   tres << "resource_name = \"" << stem << "\"\n";
   if (!idOf("albedo").empty())
     tres << "albedo_texture = ExtResource(\"" << idOf("albedo") << "\")\n";
-  // Godot multiplies roughness_texture by roughness, as the viewport does under pbr.
+  // Godot multiplies roughness_texture by roughness and metallic_texture by metallic (each
+  // read from its red channel by default), as the viewport does under pbr.
   tres << "metallic = " << number(exportedMetallic(material)) << "\n";
   tres << "roughness = " << number(exportedRoughness(material)) << "\n";
   if (!idOf("roughness").empty()) {
     tres << "roughness_texture = ExtResource(\"" << idOf("roughness") << "\")\n";
   }
+  if (!idOf("metallic").empty())
+    tres << "metallic_texture = ExtResource(\"" << idOf("metallic") << "\")\n";
   if (!idOf("normal").empty()) {
     tres << "normal_enabled = true\n";
     tres << "normal_scale = " << number(material.parameter(ParamId::NormalStrength)) << "\n";

@@ -202,6 +202,31 @@ const PackLayout* findPackLayout(std::string_view name) {
   return nullptr;
 }
 
+Result<std::vector<UnpackedMap>> unpackLayout(const Image& packed, const PackLayout& layout) {
+  std::vector<UnpackedMap> maps;
+  for (std::size_t c = 0; c < layout.terms.size(); ++c) {
+    std::string_view term = layout.terms[c];
+    const bool invert = term.starts_with("1-");
+    if (invert)
+      term.remove_prefix(2);
+    const std::size_t dot = term.find('.');
+    if (dot == std::string_view::npos)
+      continue;  // a constant
+    if (int(c) >= packed.channels()) {
+      return makeError("it has " + std::to_string(packed.channels()) + " channel(s); the " +
+                       std::string(layout.label) + " layout keeps " + std::string(term, 0, dot) +
+                       " in channel " + "RGBA"[c]);
+    }
+    Image map = channelImage(packed, int(c));
+    if (invert) {
+      for (std::size_t p = 0; p < map.pixelCount(); ++p)
+        map.data()[p] = 1.0f - map.data()[p];
+    }
+    maps.push_back({std::string(term.substr(0, dot)), std::move(map), int(c)});
+  }
+  return maps;
+}
+
 std::optional<float> neutralMapValue(std::string_view name) {
   if (name == "ao" || name == "roughness")
     return 1.0f;

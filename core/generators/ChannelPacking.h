@@ -65,6 +65,18 @@ struct PackLayout {
 };
 const std::vector<PackLayout>& packLayouts();
 const PackLayout* findPackLayout(std::string_view name);
+// The reverse of a layout: the maps a packed texture holds, one single-channel image per term
+// that names a map ("ao.r" -> ao; "1-roughness.a" -> roughness, inverted back), in the
+// layout's order; constant terms are skipped. So an ORM texture (glTF, Unreal, Poly Haven's
+// "arm") fills the AO, roughness and metallic slots. Refused when the image has fewer channels
+// than the layout reads (a grey image is no ORM texture).
+struct UnpackedMap {
+  std::string name;  // the term's map name: a slot name or "normal", "height"
+  Image image;
+  int channel;  // the packed texture's channel it came from (0..3)
+};
+Result<std::vector<UnpackedMap>> unpackLayout(const Image& packed, const PackLayout& layout);
+
 // The neutral value a missing map stands for, or nullopt for a name no layout uses.
 std::optional<float> neutralMapValue(std::string_view name);
 

@@ -121,7 +121,8 @@ std::vector<GeneratorInfo> buildTable() {
        {{"normal", "Normal map", MapSlot::Normal, true},
         {"height", "Height map", MapSlot::Height, true},
         {"ao", "Ambient occlusion map", MapSlot::AmbientOcclusion, true},
-        {"roughness", "Roughness map", MapSlot::Roughness, true}},
+        {"roughness", "Roughness map", MapSlot::Roughness, true},
+        {"metallic", "Metallic map", MapSlot::Metallic, true}},
        MapSlot::Normal,
        {choiceOption("layout", "Layout", {kPackLayoutChoices.begin(), kPackLayoutChoices.end()}, 0,
                      "normal-height: the normal's RGB and the height in A. orm: R occlusion, G "

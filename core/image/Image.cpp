@@ -17,4 +17,24 @@ bool Image::operator==(const Image& other) const {
          m_colorSpace == other.m_colorSpace && m_pixels == other.m_pixels;
 }
 
+Image channelImage(const Image& image, int channel) {
+  Image result(image.width(), image.height(), 1, ColorSpace::Linear);
+  result.setSourceBitsPerChannel(image.sourceBitsPerChannel());
+  const std::size_t stride = std::size_t(image.channels());
+  for (std::size_t p = 0; p < result.pixelCount(); ++p)
+    result.data()[p] = image.data()[p * stride + std::size_t(channel)];
+  return result;
+}
+
+std::optional<int> channelFromLetter(std::string_view letter) {
+  constexpr std::string_view kLetters = "rgba";
+  if (letter.size() != 1 || kLetters.find(letter[0]) == std::string_view::npos)
+    return std::nullopt;
+  return int(kLetters.find(letter[0]));
+}
+
+char channelLetter(int channel) {
+  return "rgba"[channel & 3];
+}
+
 }  // namespace relief::core::inline image

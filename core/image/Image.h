@@ -6,6 +6,8 @@
 #include "core/image/ColorSpace.h"
 
 #include <cstddef>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace relief::core::inline image {
@@ -60,5 +62,13 @@ class Image {
   ColorSpace m_colorSpace = ColorSpace::Linear;
   std::vector<float> m_pixels;
 };
+
+// One channel of an image as a grey image of its size (linear, the source's bit depth): a
+// map packed into a channel of another texture, as ORM textures hold three. `channel` must be
+// below image.channels().
+Image channelImage(const Image& image, int channel);
+// "r", "g", "b", "a" -> 0..3; nullopt for anything else.
+std::optional<int> channelFromLetter(std::string_view letter);
+char channelLetter(int channel);  // 0..3 -> 'r'..'a'
 
 }  // namespace relief::core::inline image

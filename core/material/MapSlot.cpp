@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <string>
+#include <vector>
 
 namespace relief::core::inline material {
 namespace {
@@ -20,6 +21,7 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
     {"height", "Height", {"height", "disp", "displacement", "bump", "depth", "parallax"}},
     {"ao", "Ambient occlusion", {"ao", "occlusion", "ambientocclusion", "", "", ""}},
     {"roughness", "Roughness", {"roughness", "rough", "rgh", "", "", ""}},
+    {"metallic", "Metallic", {"metallic", "metalness", "metal", "mtl", "", ""}},
 }};
 
 std::string lowerStem(std::string_view fileName) {
@@ -56,26 +58,43 @@ ColorSpace mapSlotColorSpace(MapSlot slot) {
   return slot == MapSlot::Color ? ColorSpace::Srgb : ColorSpace::Linear;
 }
 
-std::optional<MapSlot> guessMapSlotFromFileName(std::string_view fileName) {
-  // Split the stem into words at separators, so "rock_nor_gl" matches "nor" but "minor" does
-  // not. The last matching word wins: "brick_normal_height" is a height map of bricks.
+namespace {
+
+// The stem's words, split at separators, so "rock_nor_gl" has "nor" but "minor" does not.
+std::vector<std::string> stemWords(std::string_view fileName) {
   const std::string stem = lowerStem(fileName);
-  std::optional<MapSlot> found;
+  std::vector<std::string> words;
   std::size_t start = 0;
   while (start <= stem.size()) {
     std::size_t end = stem.find_first_of("_-. ", start);
     if (end == std::string::npos)
       end = stem.size();
-    const std::string_view word(stem.data() + start, end - start);
-    for (MapSlot slot : kAllMapSlots) {
-      const auto& hints = kSlots[std::size_t(slot)].hints;
-      if (!word.empty() && std::find(hints.begin(), hints.end(), word) != hints.end()) {
-        found = slot;
-      }
-    }
+    if (end > start)
+      words.push_back(stem.substr(start, end - start));
     start = end + 1;
   }
+  return words;
+}
+
+}  // namespace
+
+std::optional<MapSlot> guessMapSlotFromFileName(std::string_view fileName) {
+  // The last matching word wins: "brick_normal_height" is a height map of bricks.
+  std::optional<MapSlot> found;
+  for (const std::string& word : stemWords(fileName)) {
+    for (MapSlot slot : kAllMapSlots) {
+      const auto& hints = kSlots[std::size_t(slot)].hints;
+      if (std::find(hints.begin(), hints.end(), word) != hints.end())
+        found = slot;
+    }
+  }
   return found;
+}
+
+bool isOrmFileName(std::string_view fileName) {
+  const std::vector<std::string> words = stemWords(fileName);
+  return std::any_of(words.begin(), words.end(),
+                     [](const std::string& word) { return word == "orm" || word == "arm"; });
 }
 
 }  // namespace relief::core::inline material

@@ -10,15 +10,16 @@
 
 namespace relief::core::inline material {
 
-enum class MapSlot { Color, Normal, Height, AmbientOcclusion, Roughness, Count };
+enum class MapSlot { Color, Normal, Height, AmbientOcclusion, Roughness, Metallic, Count };
 
 constexpr std::size_t kMapSlotCount = std::size_t(MapSlot::Count);
 
 constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {
-    MapSlot::Color, MapSlot::Normal, MapSlot::Height, MapSlot::AmbientOcclusion,
-    MapSlot::Roughness};
+    MapSlot::Color,     MapSlot::Normal,  MapSlot::Height, MapSlot::AmbientOcclusion,
+    MapSlot::Roughness, MapSlot::Metallic};
 
-std::string_view mapSlotName(MapSlot slot);   // "color", "normal", "height", "ao", "roughness"
+std::string_view mapSlotName(MapSlot slot);   // "color", "normal", "height", "ao", "roughness",
+                                              // "metallic"
 std::string_view mapSlotLabel(MapSlot slot);  // "Colour", "Normal", ...
 std::optional<MapSlot> findMapSlot(std::string_view name);
 
@@ -28,5 +29,8 @@ ColorSpace mapSlotColorSpace(MapSlot slot);
 // Guesses the slot from a file name's hints (_height, _normal, _color, _albedo, _diffuse, ...),
 // case-insensitively; nullopt when the name says nothing.
 std::optional<MapSlot> guessMapSlotFromFileName(std::string_view fileName);
+// True when the name says the file packs occlusion, roughness and metallic in R, G and B
+// (_orm, or _arm as Poly Haven names them).
+bool isOrmFileName(std::string_view fileName);
 
 }  // namespace relief::core::inline material

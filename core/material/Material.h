@@ -20,6 +20,7 @@ namespace relief::core::inline material {
 struct MaterialMap {
   std::shared_ptr<const Image> image;  // null when the slot is empty
   std::string sourcePath;              // the file it came from; empty for generated maps
+  int sourceChannel = -1;  // the file's channel it is (0..3, an ORM texture's), or -1: all of it
   // A compression preview: the GPU blocks, with `image` their decoded map (for everything that
   // reads texels on the CPU). The renderer uploads the blocks natively when it can.
   std::shared_ptr<const CompressedTexture> compressed;
@@ -36,7 +37,8 @@ class Material {
   const Image* image(MapSlot slot) const { return map(slot).image.get(); }
   bool hasMap(MapSlot slot) const { return image(slot) != nullptr; }
   // The image is tagged with the slot's colour space (colour sRGB, the rest linear).
-  void setMap(MapSlot slot, std::shared_ptr<const Image> image, std::string sourcePath = {});
+  void setMap(MapSlot slot, std::shared_ptr<const Image> image, std::string sourcePath = {},
+              int sourceChannel = -1);
   void clearMap(MapSlot slot) { m_maps[std::size_t(slot)] = {}; }
   // Replaces a slot's map by a compressed version of it (`decoded` is its decoded map); the
   // source path stays, so the material still names where the original came from.

@@ -178,7 +178,26 @@ void readMaps(const QJsonObject& object, const std::string& path, Preset& preset
       problems.add(name + " map not loaded: " + image.error());
       continue;
     }
-    preset.material.setMap(*slot, std::make_shared<Image>(std::move(image).value()), mapPath);
+    // "channel": the map is one channel of the file (an ORM texture's G is the roughness).
+    int channel = -1;
+    if (entry.contains(QStringLiteral("channel"))) {
+      const std::string letter = entry.value(QStringLiteral("channel")).toString().toStdString();
+      const std::optional<int> index = channelFromLetter(letter);
+      if (!index) {
+        problems.add(name + " map: channel '" + letter + "' is not r, g, b or a; not loaded");
+        continue;
+      }
+      if (*index >= image->channels()) {
+        problems.add(name + " map: " + relative.toStdString() + " has " +
+                     std::to_string(image->channels()) + " channel(s), no '" + letter +
+                     "'; not loaded");
+        continue;
+      }
+      channel = *index;
+    }
+    auto map = std::make_shared<Image>(channel >= 0 ? channelImage(image.value(), channel)
+                                                    : std::move(image).value());
+    preset.material.setMap(*slot, std::move(map), mapPath, channel);
   }
 }
 
@@ -430,6 +449,11 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
     entry.insert(QStringLiteral("path"),
                  presetDir.relativeFilePath(QString::fromStdString(mapPath)));
     entry.insert(QStringLiteral("colorSpace"), qstr(colorSpaceName(mapSlotColorSpace(slot))));
+    if (map.sourceChannel >= 0 && !map.sourcePath.empty())
+      entry.insert(QStringLiteral("channel"),
+                   QString(QChar::fromLatin1(channelLetter(map.sourceChannel))));
+    else
+      entry.remove(QStringLiteral("channel"));
     const MapCompression& compression = preset.compression[std::size_t(slot)];
     if (!compression) {
       entry.remove(QStringLiteral("compression"));

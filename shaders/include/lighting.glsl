@@ -6,6 +6,7 @@ struct SurfaceSample {
   vec3 albedo;      // linear RGB
   float occlusion;  // 1 = fully open
   float roughness;  // 0 = the material's shininess, 1 = matte
+  float metallic;   // pbr only: 0 dielectric, 1 metal
 };
 
 vec3 shadeBlinnPhong(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent, float shadow) {

@@ -8,6 +8,7 @@ uniform sampler2D uNormalMap;
 uniform sampler2D uHeightMap;
 uniform sampler2D uOcclusionMap;
 uniform sampler2D uRoughnessMap;
+uniform sampler2D uMetallicMap;
 uniform vec2 uHeightMapSize;    // texels, for views measured in texels
 
 uniform float uHeightScale;     // UV units spanned by heights 0..1

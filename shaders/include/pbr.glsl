@@ -80,16 +80,18 @@ vec3 shadePbr(SurfaceSample surface, vec3 lightTangent, vec3 viewTangent, float 
   float roughness = clamp(uRoughness * (uHasRoughnessMap ? surface.roughness : 1.0), 0.0, 1.0);
   // Below 0.03 the GGX lobe is narrower than a pixel's normals can resolve: clamp, as engines do.
   roughness = max(roughness, 0.03);
+  // glTF's metallicFactor times the map's texel (its neutral texel is 1).
+  float metallic = clamp(uMetallic * surface.metallic, 0.0, 1.0);
   float nDotL = max(dot(n, l), 0.0);
   // As classic shading: fade the direct light over the last degrees above the geometric horizon.
   float horizon = clamp(l.z * 8.0, 0.0, 1.0);
   float lit = horizon * (1.0 - uShadowStrength * shadow);
-  vec3 direct = gltfBrdf(surface.albedo, uMetallic, roughness, n, l, v) * nDotL * kPi *
+  vec3 direct = gltfBrdf(surface.albedo, metallic, roughness, n, l, v) * nDotL * kPi *
                 uLightColor * lit;
   float nDotV = clamp(dot(n, v), 1e-4, 1.0);
   vec3 worldNormal = fromTangentSpace(frame, n);
   vec3 worldView = fromTangentSpace(frame, v);
-  vec3 indirect = environmentLight(surface.albedo, uMetallic, roughness, nDotV, worldNormal,
+  vec3 indirect = environmentLight(surface.albedo, metallic, roughness, nDotV, worldNormal,
                                    worldView) *
                   surface.occlusion;
   return direct + indirect;

@@ -337,6 +337,56 @@ TEST(Cli, RenderTakesTechniqueViewMeshAndFormat) {
 // --shading pbr with --format exr writes the linear radiance, unclamped: the highlight of a
 // smooth metal on a sphere is far brighter than 1 (GGX's peak at roughness 0.2 is about 200 per
 // steradian). A shading that does not exist is refused with the choices.
+// --orm fills the AO, roughness and metallic slots from one file's R, G and B: the render
+// equals the one from the three maps given apart (so each channel went to its slot), and
+// differs from one with the channels' maps swapped. A grey file is refused, named.
+TEST(Cli, OrmRendersAsItsThreeMapsGivenApart) {
+  const std::string folder = scratchFolder() + "/cli-orm";
+  std::filesystem::create_directories(folder);
+  core::Image orm(32, 32, 3), ao(32, 32, 1), roughness(32, 32, 1), metallic(32, 32, 1);
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 32; ++x) {
+      ao.at(x, y, 0) = orm.at(x, y, 0) = 0.3f + 0.7f * float(x) / 31.0f;
+      roughness.at(x, y, 0) = orm.at(x, y, 1) = 0.1f + 0.8f * float(y) / 31.0f;
+      metallic.at(x, y, 0) = orm.at(x, y, 2) = float((x / 8 + y / 8) % 2);
+    }
+  }
+  const auto save = [&](const core::Image& image, const std::string& name) {
+    // 16-bit: saveImage dithers 8-bit files, differently for an RGB file and a grey one.
+    EXPECT_TRUE(core::saveImage(image, folder + "/" + name, core::SampleFormat::UInt16).ok());
+    return q(folder + "/" + name);
+  };
+  const QString ormFile = save(orm, "stone_orm.png"), aoFile = save(ao, "ao.png"),
+                roughFile = save(roughness, "rough.png"), metalFile = save(metallic, "metal.png");
+  const auto render = [&](const QString& out, const QStringList& maps) {
+    CliRun run = runCli(QStringList{QStringLiteral("render"), QStringLiteral("--mesh"),
+                                    QStringLiteral("sphere"), QStringLiteral("--size"),
+                                    QStringLiteral("96x96"), QStringLiteral("--out"),
+                                    q(folder + "/" + out.toStdString())} +
+                        maps);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return core::loadImage(folder + "/" + out.toStdString()).value();
+  };
+  const core::Image packed = render(QStringLiteral("orm.exr"), {QStringLiteral("--orm"), ormFile});
+  const core::Image apart = render(QStringLiteral("apart.exr"),
+                                   {QStringLiteral("--ao"), aoFile, QStringLiteral("--roughness"),
+                                    roughFile, QStringLiteral("--metallic"), metalFile});
+  const core::Image swapped =
+      render(QStringLiteral("swapped.exr"),
+             {QStringLiteral("--ao"), roughFile, QStringLiteral("--roughness"), aoFile,
+              QStringLiteral("--metallic"), metalFile});
+  EXPECT_TRUE(packed == apart);
+  EXPECT_FALSE(packed == swapped);
+
+  core::Image grey(8, 8, 1);
+  const QString greyFile = save(grey, "grey_orm.png");
+  CliRun refused = runCli({QStringLiteral("render"), QStringLiteral("--orm"), greyFile,
+                           QStringLiteral("--out"), q(folder + "/x.png")});
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_NE(refused.err.find("grey_orm.png"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("not an ORM texture"), std::string::npos) << refused.err;
+}
+
 TEST(Cli, PbrShadingWritesUnclampedLinearRadianceToExr) {
   const std::string folder = scratchFolder();
   const std::string out = folder + "/metal.exr";

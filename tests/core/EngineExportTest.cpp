@@ -94,6 +94,27 @@ TEST(EngineConversion, PbrMasksCarryMetallicAndTheRoughnessFactor) {
   EXPECT_LT(worstTexel(*mask, 0, [](int, int) { return 0.7; }), 1e-5);
   EXPECT_LT(worstTexel(*mask, 3, [&](int x, int y) { return 1.0 - 0.4 * roughness->at(x, y, 0); }),
             1e-5);
+  // A metallic map: factor x map in the ORM's blue and the mask's red.
+  auto metallic = std::make_shared<Image>(roughness->width(), roughness->height(), 1);
+  for (std::size_t i = 0; i < metallic->valueCount(); ++i)
+    metallic->data()[i] = float(i % 3) / 2.0f;
+  preset.material.setMap(MapSlot::Metallic, metallic);
+  orm = packEngineMasks(preset.material, "orm");
+  ASSERT_TRUE(orm.has_value());
+  EXPECT_LT(worstTexel(*orm, 2, [&](int x, int y) { return 0.7 * metallic->at(x, y, 0); }), 1e-5);
+  const std::optional<Image> metalMask = packEngineMasks(preset.material, "unity-mask");
+  ASSERT_TRUE(metalMask.has_value());
+  EXPECT_LT(worstTexel(*metalMask, 0, [&](int x, int y) { return 0.7 * metallic->at(x, y, 0); }),
+            1e-5);
+  // Maps of different sizes (an AO at half the roughness's resolution) pack at the larger
+  // size rather than being dropped; a constant map stays that constant when resized.
+  auto smallMetal = std::make_shared<Image>(metallic->width() / 2, metallic->height() / 2, 1);
+  std::fill(smallMetal->data(), smallMetal->data() + smallMetal->valueCount(), 0.5f);
+  preset.material.setMap(MapSlot::Metallic, smallMetal);
+  orm = packEngineMasks(preset.material, "orm");
+  ASSERT_TRUE(orm.has_value());
+  EXPECT_EQ(orm->width(), roughness->width());
+  EXPECT_LT(worstTexel(*orm, 2, [](int, int) { return 0.7 * 0.5; }), 1e-4);
 }
 
 TEST(EngineConversion, GuidsAreStableHexAndDistinct) {

@@ -419,6 +419,62 @@ TEST(GltfExport, PbrShadingExportsItsMetallicAndRoughness) {
   }
 }
 
+// A metallic map travels too: glTF's metallicRoughnessTexture carries it in blue beside the
+// roughness in green (a missing roughness map is green 1, letting its factor through), and
+// Godot's metallic_texture names a file that holds it; both engines multiply by the factor.
+TEST(GltfExport, AMetallicMapGoesToBlueAndToGodotsMetallicTexture) {
+  Preset preset = syntheticPreset();
+  preset.material.setParameter(ParamId::Shading, double(int(ShadingModel::Pbr)));
+  preset.material.setParameter(ParamId::Metallic, 0.9);
+  auto metallicMap = std::make_shared<Image>(4, 4, 1);
+  for (int i = 0; i < 16; ++i)
+    metallicMap->data()[i] = float(i % 2);  // a checker of metal and dielectric
+  preset.material.setMap(MapSlot::Metallic, metallicMap);
+  const std::string folder = freshFolder("gltf-metallic-map");
+  Result<std::string> gltfPath = exportGltf(preset, makePlane(2.0f, 1), folder);
+  ASSERT_TRUE(gltfPath.ok()) << gltfPath.error();
+  const QJsonObject gltf = readJson(gltfPath.value());
+  const QJsonObject pbr =
+      gltf["materials"].toArray()[0].toObject()["pbrMetallicRoughness"].toObject();
+  EXPECT_DOUBLE_EQ(pbr["metallicFactor"].toDouble(), 0.9);
+  const int texture = pbr["metallicRoughnessTexture"].toObject()["index"].toInt();
+  const int source = gltf["textures"].toArray()[texture].toObject()["source"].toInt();
+  Result<Image> packed = loadImage(
+      folder + "/" + gltf["images"].toArray()[source].toObject()["uri"].toString().toStdString());
+  ASSERT_TRUE(packed.ok()) << packed.error();
+  for (int i = 0; i < 16; ++i) {
+    EXPECT_EQ(packed->at(i % 4, i / 4, 1), 1.0f);
+    EXPECT_EQ(packed->at(i % 4, i / 4, 2), metallicMap->data()[i]);
+  }
+
+  const std::string godotFolder = freshFolder("godot-metallic-map");
+  Result<EngineExportResult> godot = exportGodot(preset, godotFolder);
+  ASSERT_TRUE(godot.ok()) << godot.error();
+  const GodotResource tres = parseTres(godot->mainPath);
+  EXPECT_DOUBLE_EQ(std::stod(tres.properties.at("metallic")), 0.9);
+  const std::string reference = tres.properties.at("metallic_texture");
+  std::string file;
+  for (const auto& ext : tres.extResources) {
+    if (reference == "ExtResource(\"" + ext.at("id") + "\")")
+      file = ext.at("path");
+  }
+  ASSERT_FALSE(file.empty()) << reference;
+  Result<Image> metallic = loadImage(godotFolder + "/" + file);
+  ASSERT_TRUE(metallic.ok()) << metallic.error();
+  for (int i = 0; i < 16; ++i)
+    EXPECT_EQ(metallic->at(i % 4, i / 4, 0), metallicMap->data()[i]);
+  // A roughness map twice the size: the one texture takes the larger size.
+  preset.material.setMap(MapSlot::Roughness, std::make_shared<Image>(8, 8, 1));
+  const std::string larger = freshFolder("gltf-metallic-larger");
+  gltfPath = exportGltf(preset, makePlane(2.0f, 1), larger);
+  ASSERT_TRUE(gltfPath.ok()) << gltfPath.error();
+  const QJsonObject both = readJson(gltfPath.value());
+  Result<Image> packedBoth = loadImage(
+      larger + "/" + both["images"].toArray()[source].toObject()["uri"].toString().toStdString());
+  ASSERT_TRUE(packedBoth.ok()) << packedBoth.error();
+  EXPECT_EQ(packedBoth->width(), 8);
+}
+
 TEST(GodotExport, DepthMapsFlipAndSimpleParallaxIsNotDeep) {
   Preset preset = syntheticPreset();
   preset.material.setTechnique(Technique::ParallaxLimited);

@@ -427,6 +427,47 @@ TEST(Generators, ChannelPackingPutsEveryMapWhereTheLayoutSays) {
   EXPECT_EQ(findPackLayout("nope"), nullptr);
 }
 
+// Unpacking is packing's inverse: an ORM texture gives back its three maps with the channel
+// each came from, a Unity mask map gives roughness from its smoothness, and an image with
+// fewer channels than the layout reads is refused with the channel it lacks.
+TEST(Generators, UnpackingALayoutGivesBackTheMapsPackedIntoIt) {
+  const Image ao = field(8, 4, [](int x, int, int, int) { return 0.1 * x; });
+  const Image roughness = field(8, 4, [](int x, int y, int, int) { return 0.05 * (x + y); });
+  const Image metallic = field(8, 4, [](int, int y, int, int) { return y / 3.0; });
+  const std::vector<NamedMap> maps = {
+      {"ao", &ao}, {"roughness", &roughness}, {"metallic", &metallic}};
+  for (const char* name : {"orm", "unity-mask"}) {
+    const PackLayout& layout = *findPackLayout(name);
+    Result<Image> packed = packChannels(maps, resolveLayoutTerms(layout, maps));
+    ASSERT_TRUE(packed.ok()) << packed.error();
+    Result<std::vector<UnpackedMap>> unpacked = unpackLayout(packed.value(), layout);
+    ASSERT_TRUE(unpacked.ok()) << unpacked.error();
+    ASSERT_EQ(unpacked->size(), 3u) << name;  // the mask map's detail constant is no map
+    for (const UnpackedMap& map : unpacked.value()) {
+      const Image& original = map.name == "ao"          ? ao
+                              : map.name == "roughness" ? roughness
+                                                        : metallic;
+      ASSERT_EQ(map.image.channels(), 1);
+      for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 8; ++x)
+          EXPECT_NEAR(map.image.at(x, y, 0), original.at(x, y, 0), 1e-6) << name << " " << map.name;
+      }
+    }
+  }
+  Result<std::vector<UnpackedMap>> orm = unpackLayout(
+      packChannels(maps, {"ao.r", "roughness.r", "metallic.r"}).value(), *findPackLayout("orm"));
+  ASSERT_TRUE(orm.ok());
+  EXPECT_EQ(orm.value()[0].name, "ao");
+  EXPECT_EQ(orm.value()[0].channel, 0);
+  EXPECT_EQ(orm.value()[1].name, "roughness");
+  EXPECT_EQ(orm.value()[1].channel, 1);
+  EXPECT_EQ(orm.value()[2].name, "metallic");
+  EXPECT_EQ(orm.value()[2].channel, 2);
+  Result<std::vector<UnpackedMap>> grey = unpackLayout(ao, *findPackLayout("orm"));
+  ASSERT_FALSE(grey.ok());
+  EXPECT_NE(grey.error().find("channel G"), std::string::npos) << grey.error();
+}
+
 // The pack generator in an engine layout takes any subset of its maps: the Unity mask map from
 // an AO map alone is metallic 0, occlusion, detail 1 and smoothness 0 (roughness neutral 1),
 // with notes naming the maps that were missing; height in normal alpha still needs both maps.

@@ -17,6 +17,8 @@ TEST(MapSlot, GuessesFromCommonNamingSchemes) {
   EXPECT_EQ(guessMapSlotFromFileName("ground_disp.exr"), MapSlot::Height);
   EXPECT_EQ(guessMapSlotFromFileName("ground_AO.png"), MapSlot::AmbientOcclusion);
   EXPECT_EQ(guessMapSlotFromFileName("ground_roughness.png"), MapSlot::Roughness);
+  EXPECT_EQ(guessMapSlotFromFileName("T_Hull_Metallic.tga"), MapSlot::Metallic);
+  EXPECT_EQ(guessMapSlotFromFileName("hull-metalness.png"), MapSlot::Metallic);
   // The last hint wins: a height map made from a normal map.
   EXPECT_EQ(guessMapSlotFromFileName("wall_normal_height.png"), MapSlot::Height);
 }
@@ -28,10 +30,19 @@ TEST(MapSlot, DoesNotGuessFromPartsOfWords) {
   EXPECT_EQ(guessMapSlotFromFileName("normalized.png"), std::nullopt);
 }
 
+// Packed occlusion/roughness/metallic files by their engines' names, and nothing else.
+TEST(MapSlot, RecognisesOrmTexturesByName) {
+  EXPECT_TRUE(isOrmFileName("T_Rock_ORM.png"));
+  EXPECT_TRUE(isOrmFileName("/textures/rocky_trail_arm_4k.exr"));  // Poly Haven
+  EXPECT_FALSE(isOrmFileName("storm.png"));
+  EXPECT_FALSE(isOrmFileName("farm_field_color.png"));
+  EXPECT_FALSE(isOrmFileName("rock_roughness.png"));
+}
+
 TEST(MapSlot, ColourIsSrgbAndDataIsLinear) {
   EXPECT_EQ(mapSlotColorSpace(MapSlot::Color), ColorSpace::Srgb);
-  for (MapSlot slot :
-       {MapSlot::Normal, MapSlot::Height, MapSlot::AmbientOcclusion, MapSlot::Roughness}) {
+  for (MapSlot slot : {MapSlot::Normal, MapSlot::Height, MapSlot::AmbientOcclusion,
+                       MapSlot::Roughness, MapSlot::Metallic}) {
     EXPECT_EQ(mapSlotColorSpace(slot), ColorSpace::Linear);
   }
 }

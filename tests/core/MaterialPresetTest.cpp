@@ -4,6 +4,7 @@
 // written beside the preset.
 #include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
+#include "core/material/OrmTexture.h"
 #include "support/TestPaths.h"
 
 #include <QJsonDocument>
@@ -305,6 +306,80 @@ TEST(MaterialPreset, MapsMadeInTheEditorAreWrittenBesideThePreset) {
     EXPECT_NEAR(back.data()[i], height->data()[i], 1.0f / 65535.0f);
   }
   EXPECT_EQ(loaded->preset.material.image(MapSlot::AmbientOcclusion)->at(3, 1, 0), 2.5f);
+}
+
+// An ORM texture fills three slots from one file; the preset names the file once per slot
+// with the channel it reads ("channel": "g"), writes no copies, and loads the same maps back.
+// A channel that is no letter, or that the file lacks, is reported and that map skipped.
+TEST(MaterialPreset, OrmChannelsRoundTripAsOneFileAndAChannelEach) {
+  const std::string folder = freshFolder("orm");
+  Image orm(8, 4, 3);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      orm.at(x, y, 0) = float(x) / 7.0f;
+      orm.at(x, y, 1) = float(y) / 3.0f;
+      orm.at(x, y, 2) = float((x + y) % 2);
+    }
+  }
+  const std::string ormPath = folder + "/rock_orm.png";
+  ASSERT_TRUE(saveImage(orm, ormPath, SampleFormat::UInt16).ok());
+  Result<std::vector<ChannelMap>> maps = loadOrmTexture(ormPath);
+  ASSERT_TRUE(maps.ok()) << maps.error();
+  ASSERT_EQ(maps->size(), 3u);
+  Preset preset;
+  for (ChannelMap& map : maps.value()) {
+    preset.material.setMap(map.slot, std::make_shared<Image>(std::move(map.image)), ormPath,
+                           map.channel);
+  }
+  const std::string path = folder + "/rock.relief";
+  Result<SavedPreset> saved = savePreset(preset, path);
+  ASSERT_TRUE(saved.ok()) << saved.error();
+  EXPECT_TRUE(saved->writtenMaps.empty());
+  const QJsonObject written =
+      QJsonDocument::fromJson(QByteArray::fromStdString(readText(path))).object();
+  const QJsonObject mapsJson = written.value(QStringLiteral("maps")).toObject();
+  const std::pair<const char*, const char*> expected[] = {
+      {"ao", "r"}, {"roughness", "g"}, {"metallic", "b"}};
+  for (const auto& [slot, letter] : expected) {
+    const QJsonObject entry = mapsJson.value(QLatin1String(slot)).toObject();
+    EXPECT_EQ(entry.value(QStringLiteral("path")).toString(), QStringLiteral("rock_orm.png"));
+    EXPECT_EQ(entry.value(QStringLiteral("channel")).toString(), QLatin1String(letter)) << slot;
+  }
+  Result<LoadedPreset> loaded = loadPreset(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_TRUE(loaded->warnings.empty());
+  const MapSlot slots[] = {MapSlot::AmbientOcclusion, MapSlot::Roughness, MapSlot::Metallic};
+  for (int c = 0; c < 3; ++c) {
+    const MaterialMap& map = loaded->preset.material.map(slots[c]);
+    ASSERT_TRUE(map.image) << c;
+    EXPECT_EQ(map.sourceChannel, c);
+    ASSERT_EQ(map.image->channels(), 1);
+    for (int y = 0; y < 4; ++y) {
+      for (int x = 0; x < 8; ++x)
+        EXPECT_NEAR(map.image->at(x, y, 0), orm.at(x, y, c), 1.0f / 65535.0f) << c;
+    }
+  }
+
+  std::string text = readText(path);
+  text.replace(text.find("\"g\""), 3, "\"q\"");
+  text.replace(text.find("\"b\""), 3, "\"a\"");
+  writeText(path, text);
+  Result<LoadedPreset> broken = loadPreset(path);
+  ASSERT_TRUE(broken.ok()) << broken.error();
+  EXPECT_FALSE(broken->preset.material.hasMap(MapSlot::Roughness));
+  EXPECT_FALSE(broken->preset.material.hasMap(MapSlot::Metallic));
+  EXPECT_TRUE(broken->preset.material.hasMap(MapSlot::AmbientOcclusion));
+  ASSERT_EQ(broken->warnings.size(), 2u);
+  const std::string warnings = broken->warnings[0] + "\n" + broken->warnings[1];
+  EXPECT_NE(warnings.find("roughness map: channel 'q'"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("metallic map: rock_orm.png has 3 channel(s), no 'a'"), std::string::npos)
+      << warnings;
+
+  // A grey file is no ORM texture; the message names it.
+  ASSERT_TRUE(saveImage(Image(4, 4, 1), folder + "/grey_orm.png", SampleFormat::UInt8).ok());
+  Result<std::vector<ChannelMap>> grey = loadOrmTexture(folder + "/grey_orm.png");
+  ASSERT_FALSE(grey.ok());
+  EXPECT_NE(grey.error().find("grey_orm.png"), std::string::npos) << grey.error();
 }
 
 TEST(MaterialPreset, TheDocumentedExampleLoadsWithoutWarnings) {

@@ -146,6 +146,45 @@ TEST_F(PbrShading, TheDirectionalLightReflectsTheBrdf) {
   }
 }
 
+// The metallic map multiplies the metallic factor (glTF's metallicRoughnessTexture blue): with
+// a map of constant m and factor f the plane of the previous test reflects the BRDF of
+// metallic f m, from core::gltfBrdf, so a map of 0 is a dielectric whatever the factor.
+TEST_F(PbrShading, TheMetallicMapMultipliesTheMetallicFactor) {
+  offscreen().setMesh(core::makePlane());
+  renderer::FrameSettings frame;
+  frame.output = renderer::FrameOutput::FloatData;
+  frame.view.camera.yawDeg = 0.0f;
+  frame.view.camera.pitchDeg = 89.0f;
+  frame.view.camera.distance = 2.0f;
+  frame.view.light.azimuthDeg = 90.0f;
+  frame.view.light.elevationDeg = 40.0f;
+  frame.view.light.color = glm::vec3(1.0f);
+  frame.view.light.intensity = 1.5f;
+  frame.view.environment.intensity = 0.0f;
+  const auto tangent = [](glm::vec3 w) { return glm::normalize(glm::vec3(w.x, -w.z, w.y)); };
+  const glm::vec3 l = tangent(frame.view.light.direction());
+  const glm::vec3 v = tangent(frame.view.camera.position() - frame.view.camera.target);
+  const float base = core::srgbToLinear(0.8f);
+  struct Case {
+    float factor, map;
+  };
+  for (Case c : {Case{1.0f, 0.5f}, Case{0.6f, 1.0f}, Case{0.6f, 0.0f}}) {
+    core::Material material = pbrMaterial(0.8f, c.factor, 0.4f);
+    auto map = std::make_shared<Image>(4, 4, 1);
+    std::fill(map->data(), map->data() + map->valueCount(), c.map);
+    material.setMap(MapSlot::Metallic, map);
+    offscreen().setMaterial(material);
+    core::Result<Image> image = offscreen().render(frame, 33, 33);
+    ASSERT_TRUE(image.ok()) << image.error();
+    const float expected =
+        core::gltfBrdf(glm::vec3(base), c.factor * c.map, 0.4f, glm::vec3(0.0f, 0.0f, 1.0f), l, v)
+            .x *
+        l.z * core::kPi * frame.view.light.intensity;
+    EXPECT_NEAR(image->at(16, 16, 0), expected, 0.02f * expected)
+        << "factor " << c.factor << " map " << c.map;
+  }
+}
+
 // The display output is the float output's radiance through the display transform (exposure,
 // then Khronos PBR Neutral or ACES filmic) and the sRGB encoding, computed here by
 // core::applyDisplayTransform; 1.5/255 allows the output's 8-bit rounding. A bright light puts

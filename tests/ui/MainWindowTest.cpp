@@ -2,9 +2,11 @@
 // parameter sliders change it live, undo brings it back, and the viewport shows exactly what
 // the offscreen renderer (and so relief-cli render) produces for the same view.
 #include "core/image/ColorSpace.h"
+#include "core/image/ImageIO.h"
 #include "core/material/MaterialPreset.h"
 #include "renderer/ImageConversion.h"
 #include "renderer/OffscreenRenderer.h"
+#include "support/DialogAnswerer.h"
 #include "support/ImageCompare.h"
 #include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
@@ -15,12 +17,17 @@
 #include "ui/window/MainWindow.h"
 
 #include <QCheckBox>
+#include <QFileDialog>
 #include <QLabel>
 #include <QSlider>
 #include <QTest>
+#include <QTimer>
+#include <QToolButton>
 #include <QUndoStack>
 
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 namespace relief::test {
 namespace {
@@ -137,6 +144,76 @@ TEST_F(MainWindowTest, DroppedFilesGoToTheSlotTheirNamesHint) {
   // Each map replacement is its own undo step.
   EXPECT_EQ(m_window->document()->undoStack()->count(), 2);
   EXPECT_TRUE(m_window->windowTitle().contains(QLatin1Char('*')));
+}
+
+// An ORM texture (R occlusion, G roughness, B metallic) from the maps panel's "Load ORM…"
+// button fills three slots in one undo step, each remembering its channel, which the panel
+// shows; a grey file is refused with a message naming it and nothing changes. A file named
+// *_orm opened as a map takes the same way.
+TEST_F(MainWindowTest, AnOrmTextureFillsThreeSlotsInOneUndoStep) {
+  const std::string folder = scratchFolder() + "/ui-orm";
+  std::filesystem::create_directories(folder);
+  core::Image orm(16, 16, 3);
+  for (int y = 0; y < 16; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      orm.at(x, y, 0) = float(x) / 15.0f;
+      orm.at(x, y, 1) = float(y) / 15.0f;
+      orm.at(x, y, 2) = 1.0f;
+    }
+  }
+  const QString path = QString::fromStdString(folder + "/stone_orm.png");
+  ASSERT_TRUE(core::saveImage(orm, path.toStdString(), core::SampleFormat::UInt8).ok());
+  ui::MaterialDocument* document = m_window->document();
+  const int stepsBefore = document->undoStack()->count();
+
+  // The button opens a file dialog; answer it with the file.
+  QTimer::singleShot(200, [&] {
+    auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+    ASSERT_NE(dialog, nullptr);
+    dialog->selectFile(path);
+    QMetaObject::invokeMethod(dialog, "accept");  // accept() is a protected slot
+  });
+  auto* button = m_window->findChild<QToolButton*>(QStringLiteral("load_orm"));
+  ASSERT_NE(button, nullptr);
+  button->click();
+  const core::MapSlot slots[] = {core::MapSlot::AmbientOcclusion, core::MapSlot::Roughness,
+                                 core::MapSlot::Metallic};
+  for (int c = 0; c < 3; ++c) {
+    const core::MaterialMap& map = document->material().map(slots[c]);
+    ASSERT_TRUE(map.image) << c;
+    EXPECT_EQ(QString::fromStdString(map.sourcePath), path);
+    EXPECT_EQ(map.sourceChannel, c);
+    EXPECT_NEAR(map.image->at(15, 0, 0), orm.at(15, 0, c), 1e-6) << c;
+    EXPECT_NEAR(map.image->at(0, 15, 0), orm.at(0, 15, c), 1e-6) << c;
+  }
+  EXPECT_EQ(document->undoStack()->count(), stepsBefore + 1);
+  bool shown = false;
+  for (const QLabel* label : m_window->findChildren<QLabel*>())
+    shown = shown || label->text().contains(QStringLiteral("stone_orm.png (channel G)"));
+  EXPECT_TRUE(shown) << "the maps panel names the roughness map's channel";
+
+  document->undoStack()->undo();
+  for (core::MapSlot slot : slots)
+    EXPECT_FALSE(document->material().hasMap(slot)) << core::mapSlotName(slot);
+
+  // A grey *_orm file: refused, named, nothing changes.
+  const QString grey = QString::fromStdString(folder + "/grey_orm.png");
+  ASSERT_TRUE(
+      core::saveImage(core::Image(8, 8, 1), grey.toStdString(), core::SampleFormat::UInt8).ok());
+  const int stepsNow = document->undoStack()->index();
+  {
+    DialogAnswerer ok(QStringLiteral("OK"));
+    m_window->openFiles({grey});
+    EXPECT_EQ(ok.answered(), 1);
+    EXPECT_TRUE(ok.lastText().contains(QStringLiteral("grey_orm.png")))
+        << ok.lastText().toStdString();
+  }
+  EXPECT_EQ(document->undoStack()->index(), stepsNow);
+  EXPECT_FALSE(document->material().hasMap(core::MapSlot::Roughness));
+  // Opened by name, the good file splits as from the button.
+  m_window->openFiles({path});
+  EXPECT_EQ(document->material().map(core::MapSlot::Metallic).sourceChannel, 2);
+  EXPECT_EQ(document->undoStack()->index(), stepsNow + 1);
 }
 
 TEST_F(MainWindowTest, CtrlDragMovesTheLightAndPlainDragOrbits) {

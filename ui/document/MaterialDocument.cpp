@@ -90,9 +90,9 @@ void MaterialDocument::setTechnique(core::Technique technique) {
 }
 
 void MaterialDocument::setMap(core::MapSlot slot, std::shared_ptr<const core::Image> image,
-                              const QString& sourcePath) {
+                              const QString& sourcePath, int sourceChannel) {
   core::Material probe;  // tags the image with the slot's colour space, as the material would
-  probe.setMap(slot, std::move(image), sourcePath.toStdString());
+  probe.setMap(slot, std::move(image), sourcePath.toStdString(), sourceChannel);
   m_undoStack.push(new SetMapCommand(this, slot, m_material.map(slot), probe.map(slot)));
 }
 
@@ -140,7 +140,7 @@ void MaterialDocument::applyTechnique(core::Technique technique) {
 }
 
 void MaterialDocument::applyMap(core::MapSlot slot, const core::MaterialMap& map) {
-  m_material.setMap(slot, map.image, map.sourcePath);
+  m_material.setMap(slot, map.image, map.sourcePath, map.sourceChannel);
   Q_EMIT mapChanged(slot);
 }
 

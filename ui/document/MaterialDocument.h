@@ -46,8 +46,9 @@ class MaterialDocument : public QObject {
   void setParameter(core::ParamId id, double value, int interactiveEdit = 0);
   void resetParameters();
   void setTechnique(core::Technique technique);
+  // `sourceChannel`: the file's channel the map is (an ORM texture's), -1 for the whole file.
   void setMap(core::MapSlot slot, std::shared_ptr<const core::Image> image,
-              const QString& sourcePath);
+              const QString& sourcePath, int sourceChannel = -1);
   void clearMap(core::MapSlot slot);
   // The compression chosen for a slot (saved with the preset); one undo step per change.
   const core::MapCompression& compression(core::MapSlot slot) const {

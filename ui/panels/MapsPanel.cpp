@@ -51,6 +51,15 @@ MapsPanel::MapsPanel(MaterialDocument* document, QWidget* parent)
     ++row;
   }
   grid->setColumnStretch(1, 1);
+  auto* orm = new QToolButton;
+  orm->setText(tr("Load ORM…"));
+  orm->setObjectName(QStringLiteral("load_orm"));
+  orm->setToolTip(
+      tr("Load one texture that packs ambient occlusion (R), roughness (G) and "
+         "metallic (B), as glTF and Unreal do, into those three slots. Files named "
+         "*_orm or *_arm are split so when opened or dropped."));
+  connect(orm, &QToolButton::clicked, this, &MapsPanel::loadOrmRequested);
+  outer->insertWidget(1, orm, 0, Qt::AlignRight);
   connect(document, &MaterialDocument::mapChanged, this, &MapsPanel::showSlot);
   connect(document, &MaterialDocument::materialReset, this, &MapsPanel::showAll);
   showAll();
@@ -67,9 +76,12 @@ void MapsPanel::showSlot(core::MapSlot slot) {
     return;
   }
   row.thumbnail->setPixmap(QPixmap::fromImage(renderer::makeThumbnail(*map.image, kThumbnailSize)));
-  const QString name = map.sourcePath.empty()
-                           ? tr("generated")
-                           : QFileInfo(QString::fromStdString(map.sourcePath)).fileName();
+  QString name = map.sourcePath.empty()
+                     ? tr("generated")
+                     : QFileInfo(QString::fromStdString(map.sourcePath)).fileName();
+  if (map.sourceChannel >= 0 && !map.sourcePath.empty())
+    name += tr(" (channel %1)")
+                .arg(QChar::fromLatin1(core::channelLetter(map.sourceChannel)).toUpper());
   row.description->setText(label + QStringLiteral("<br>") + name.toHtmlEscaped() +
                            QStringLiteral("<br>") +
                            tr("%1×%2, %3 ch")

@@ -24,6 +24,7 @@ class MapsPanel : public QWidget {
 
  Q_SIGNALS:
   void loadRequested(relief::core::MapSlot slot);
+  void loadOrmRequested();
 
  private:
   void showSlot(core::MapSlot slot);

@@ -202,6 +202,7 @@ void MainWindow::createDocks() {
   resizeDocks({parametersDock, lightDock}, {380, 330}, Qt::Horizontal);
   connect(m_maps, &MapsPanel::loadRequested, m_mapLoader,
           [this](core::MapSlot slot) { m_mapLoader->choose(slot); });
+  connect(m_maps, &MapsPanel::loadOrmRequested, m_mapLoader, &MapFileLoader::chooseOrm);
 }
 
 void MainWindow::createMenus() {

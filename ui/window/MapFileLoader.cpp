@@ -4,6 +4,7 @@
 #include "core/compression/MapFile.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageFileTypes.h"
+#include "core/material/OrmTexture.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/window/AppSettings.h"
 #include "ui/window/QtText.h"
@@ -50,6 +51,8 @@ std::optional<core::MapSlot> MapFileLoader::askForSlot(const QString& path) {
 }
 
 bool MapFileLoader::load(const QString& path, std::optional<core::MapSlot> slot) {
+  if (!slot && core::isOrmFileName(QFileInfo(path).fileName().toStdString()))
+    return loadOrm(path);
   if (!slot)
     slot = core::guessMapSlotFromFileName(QFileInfo(path).fileName().toStdString());
   if (!slot)
@@ -71,6 +74,38 @@ bool MapFileLoader::load(const QString& path, std::optional<core::MapSlot> slot)
           .arg(QFileInfo(path).fileName(), toQString(core::mapSlotLabel(*slot)).toLower()),
       5000);
   return true;
+}
+
+bool MapFileLoader::loadOrm(const QString& path) {
+  const QString fileName = QFileInfo(path).fileName();
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  core::Result<std::vector<core::ChannelMap>> maps = core::loadOrmTexture(path.toStdString());
+  QApplication::restoreOverrideCursor();
+  if (!maps) {
+    QMessageBox::warning(m_parent, tr("Cannot load ORM texture"),
+                         QString::fromStdString(maps.error()));
+    return false;
+  }
+  m_document->undoStack()->beginMacro(tr("Load ORM texture (%1)").arg(fileName));
+  for (core::ChannelMap& map : maps.value()) {
+    m_document->setMap(map.slot, std::make_shared<core::Image>(std::move(map.image)),
+                       QFileInfo(path).absoluteFilePath(), map.channel);
+  }
+  m_document->undoStack()->endMacro();
+  settings::setLastFolder(QStringLiteral("map"), QFileInfo(path).absolutePath());
+  Q_EMIT statusMessage(
+      tr("Loaded %1 as the ambient occlusion (R), roughness (G) and metallic (B) maps")
+          .arg(fileName),
+      5000);
+  return true;
+}
+
+void MapFileLoader::chooseOrm() {
+  const QString path = QFileDialog::getOpenFileName(
+      m_parent, tr("Load ORM texture (R occlusion, G roughness, B metallic)"),
+      settings::lastFolder(QStringLiteral("map")), fileFilter());
+  if (!path.isEmpty())
+    loadOrm(path);
 }
 
 void MapFileLoader::choose(std::optional<core::MapSlot> slot) {
