@@ -90,6 +90,8 @@ ViewportWidget::~ViewportWidget() {
 void ViewportWidget::changed() {
   m_errorStale = true;
   m_rested = false;
+  if (m_restTimer->isActive())
+    m_restTimer->start();  // kRestMs after the last change
   update();
 }
 
@@ -360,11 +362,8 @@ void ViewportWidget::paintGL() {
   const float scale = !m_rested && m_interaction->isInteracting()
                           ? m_resolution.nextInteractiveScale(fullPixels)
                           : 1.0f;
-  if (scale < 1.0f) {
-    m_restTimer->start();
-  } else {
+  if (scale >= 1.0f)
     m_resolution.resetScale();
-  }
   if (core::Status status = m_renderer->renderReduced(frame, pixelWidth, pixelHeight, scale,
                                                       defaultFramebufferObject());
       !status) {
@@ -390,6 +389,10 @@ void ViewportWidget::paintGL() {
       renderer::MaterialRenderer::reducedSize(pixelWidth, pixelHeight, scale);
   m_resolution.recordFrame(milliseconds, double(drawnWidth) * double(drawnHeight));
   m_lastFrameScale = scale;
+  // The rest is counted from the end of the reduced frame (and again from each later change):
+  // a frame slower than kRestMs must not make the next change's frame a full one.
+  if (scale < 1.0f)
+    m_restTimer->start();
   m_samplesTimer->start();  // every frame restarts the wait for the view to rest
   paintOverlays();
   Q_EMIT frameRendered(milliseconds, double(scale));
