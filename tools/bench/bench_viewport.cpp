@@ -12,7 +12,7 @@
 // per height map, not per frame); the bench prints those builds' times for a 4096x4096 map after
 // the tables.
 //
-// Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5]
+// Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5] [--shading-only]
 #include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
 #include "core/shading/EnvironmentMaps.h"
@@ -60,6 +60,7 @@ int main(int argc, char* argv[]) {
   QSurfaceFormat::setDefaultFormat(renderer::requiredSurfaceFormat());
   QGuiApplication application(argc, argv);
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+  const bool shadingOnly = argc > 2 && std::string(argv[2]) == "--shading-only";
   const int width = 1280, height = 720;
 
   if (auto probe = renderer::probeOpenGL(); !probe) {
@@ -88,6 +89,8 @@ int main(int argc, char* argv[]) {
   core::Material base = preset->preset.material;
   base.setParameter(core::ParamId::Tiling, base.parameter(core::ParamId::Tiling) * 10.0);
   base.setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Off));
+  // The technique table and the shading table's reference are classic (the sample shades pbr).
+  base.setParameter(core::ParamId::Shading, double(int(core::ShadingModel::Classic)));
 
   renderer::MaterialRenderer materialRenderer;
   if (auto status = materialRenderer.initialize(); !status) {
@@ -126,9 +129,10 @@ int main(int argc, char* argv[]) {
   };
   core::Material normal = base;
   normal.setTechnique(core::Technique::Normal);
-  measure(normal, "-", "off");
+  if (!shadingOnly)
+    measure(normal, "-", "off");
   for (core::Technique technique : core::allTechniques()) {
-    if (technique == core::Technique::Normal)
+    if (shadingOnly || technique == core::Technique::Normal)
       continue;
     // Parallax takes two samples whatever the count, the quadtree and cone walk as far as the ray
     // needs and displacement tessellates (at its default cap): one row each. POM also runs at
@@ -152,7 +156,8 @@ int main(int argc, char* argv[]) {
   core::Material shadowed = base;
   shadowed.setTechnique(core::Technique::Pom);
   shadowed.setParameter(core::ParamId::ShadowMode, double(core::ShadowMode::Soft));
-  measure(shadowed, "8/32", "soft, 16");
+  if (!shadingOnly)
+    measure(shadowed, "8/32", "soft, 16");
 
   // Shading models: the same technique and view under classic and pbr (issue 12: pbr at most
   // 1.3x classic). This machine's speed drifts by tens of percent within a minute, so each cell
@@ -227,6 +232,8 @@ int main(int argc, char* argv[]) {
       std::printf(" %.1f / %.1f (%.2fx) |", row.pbr[v], row.classic[v], row.ratio[v]);
     std::printf("\n");
   }
+  if (shadingOnly)
+    return 0;
   // The quadtree's pyramid and the cone technique's cone map for a 4096x4096 height map, built
   // in core from the cobblestones height tiled 4 x 4 (real data at that size). Median of 3
   // (cones) and 5 (pyramid).
