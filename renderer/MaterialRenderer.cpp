@@ -252,7 +252,9 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   program.setUniformValue("uSplitSumLut", kSplitSumUnit);
   if (isPbr(material))
     bindEnvironment(program, frame.view.environment);
-  program.setUniformValue("uHasRoughnessMap", material.image(MapSlot::Roughness) != nullptr);
+  program.setUniformValue("uHasOcclusionMap", material.hasMap(MapSlot::AmbientOcclusion));
+  program.setUniformValue("uHasRoughnessMap", material.hasMap(MapSlot::Roughness));
+  program.setUniformValue("uHasMetallicMap", material.hasMap(MapSlot::Metallic));
   // A natively uploaded two-channel normal (BC5, EAC RG11, DXT5nm swizzled) has no Z texel.
   const auto& normal = material.map(MapSlot::Normal).compressed;
   program.setUniformValue(

@@ -98,10 +98,10 @@ void main() {
   SurfaceSample surface;
   surface.normal = sampleNormalMap(visible.uv, dx, dy);
   surface.albedo = sampleMap(uColorMap, visible.uv, dx, dy).rgb;  // sRGB texture: linear
-  surface.occlusion = sampleMap(uOcclusionMap, visible.uv, dx, dy).r;
-  surface.roughness = sampleMap(uRoughnessMap, visible.uv, dx, dy).r;
+  surface.occlusion = uHasOcclusionMap ? sampleMap(uOcclusionMap, visible.uv, dx, dy).r : 1.0;
+  surface.roughness = uHasRoughnessMap ? sampleMap(uRoughnessMap, visible.uv, dx, dy).r : 0.0;
 #ifdef SHADING_PBR
-  surface.metallic = sampleMap(uMetallicMap, visible.uv, dx, dy).r;
+  surface.metallic = uHasMetallicMap ? sampleMap(uMetallicMap, visible.uv, dx, dy).r : 1.0;
 #else
   surface.metallic = 0.0;
 #endif

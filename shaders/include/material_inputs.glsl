@@ -33,7 +33,11 @@ uniform float uSpecular;        // highlight strength
 uniform float uShininess;       // Blinn-Phong exponent
 uniform float uMetallic;        // glTF metallicFactor
 uniform float uRoughness;       // glTF roughnessFactor (perceptual)
-uniform bool uHasRoughnessMap;  // the roughness slot holds a map (else its neutral 0 texel)
+// Which optional slots hold a map: an empty one is not sampled (its neutral value is used), a
+// texture fetch saved per pixel for each, which llvmpipe feels.
+uniform bool uHasOcclusionMap;  // else 1: open
+uniform bool uHasRoughnessMap;  // else 0 (classic: the shininess as set; pbr: the factor alone)
+uniform bool uHasMetallicMap;   // else 1: the metallic factor alone
 uniform sampler2D uSplitSumLut; // (A, B) over N.V (s) and roughness (t) (core/shading)
 
 uniform vec3 uCameraPosition;   // world space
