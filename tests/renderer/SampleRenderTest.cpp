@@ -82,6 +82,47 @@ TEST_F(SampleRender, EveryTechniqueMatchesItsBaseline) {
   }
 }
 
+// Each shading model and built-in environment, on the bricks sphere seen from the default
+// camera: classic (Blinn-Phong, the directional light and a constant ambient), and pbr under
+// the overcast sky shown behind the material, under the uniform white, and as a smooth metal
+// (metallic 1, roughness 0.25) under the studio with its blurred background. The studio with
+// the plain backdrop is cobblestones_sphere above.
+TEST_F(SampleRender, EachShadingAndEnvironmentMatchesItsBaseline) {
+  core::Result<core::LoadedPreset> preset = core::loadPreset(samplePreset("bricks"));
+  ASSERT_TRUE(preset.ok()) << preset.error();
+  const core::Mesh mesh = core::makePrimitive(core::PrimitiveShape::Sphere);
+  offscreen().setMesh(mesh);
+  struct Case {
+    const char* baseline;
+    core::ShadingModel shading;
+    const char* environment;
+    core::Background background;
+    float metallic, roughness;
+  };
+  const Case cases[] = {
+      {"shading_classic", core::ShadingModel::Classic, "studio", core::Background::Color, 0, 0},
+      {"environment_sky", core::ShadingModel::Pbr, "sky", core::Background::Environment, 0, 0.8f},
+      {"environment_uniform", core::ShadingModel::Pbr, "uniform", core::Background::Color, 0, 0.8f},
+      {"environment_studio_metal", core::ShadingModel::Pbr, "studio", core::Background::Blurred,
+       1.0f, 0.25f},
+  };
+  for (const Case& c : cases) {
+    core::Material material = preset->preset.material;
+    material.setParameter(core::ParamId::Shading, double(int(c.shading)));
+    material.setParameter(core::ParamId::Metallic, c.metallic);
+    material.setParameter(core::ParamId::Roughness, c.roughness);
+    offscreen().setMaterial(material);
+    renderer::FrameSettings frame;
+    frame.view.camera = core::defaultCameraFor(mesh, 240.0f / 160.0f);
+    frame.view.environment.source = c.environment;
+    frame.view.environment.background = c.background;
+    core::Result<core::Image> image = offscreen().render(frame, 240, 160);
+    ASSERT_TRUE(image.ok()) << image.error();
+    EXPECT_TRUE(matchesBaseline(image.value(), c.baseline, kMaxTolerance, kMeanTolerance))
+        << c.baseline;
+  }
+}
+
 // The two exact tracers reach the same bilinear surface by different walks (the maximum-mipmap
 // pyramid, cone steps), so where the height map is magnified their frames must agree: close
 // over the cobblestones, looking down at 30 degrees. Where the map is minified both take the
