@@ -113,33 +113,46 @@ TEST_F(PbrShading, ABlackDielectricReflectsTheSpecularAlbedo) {
   EXPECT_GT(std::abs(smooth - rough), 0.002f);
 }
 
-// A plane seen from straight above, lit at 40 degrees: the centre pixel reflects
-// f(l, v) (N.L) pi E (pbr.glsl's light convention), with f from core::gltfBrdf.
+// A plane seen from straight above, lit at 40 degrees, with no environment light: the centre
+// pixel reflects f(l, v) (N.L) pi E (pbr.glsl's light convention), with f from core::gltfBrdf.
+struct LitPlane {
+  renderer::FrameSettings frame;
+  glm::vec3 l, v;  // in the plane's tangent space
+
+  LitPlane() {
+    frame.output = renderer::FrameOutput::FloatData;
+    frame.view.camera.yawDeg = 0.0f;
+    frame.view.camera.pitchDeg = 89.0f;
+    frame.view.camera.distance = 2.0f;
+    frame.view.light.azimuthDeg = 90.0f;
+    frame.view.light.elevationDeg = 40.0f;
+    frame.view.light.color = glm::vec3(1.0f);
+    frame.view.light.intensity = 1.5f;
+    frame.view.environment.intensity = 0.0f;
+    // World to the plane's tangent space: T = +X, B = -Z, N = +Y.
+    const auto tangent = [](glm::vec3 w) { return glm::normalize(glm::vec3(w.x, -w.z, w.y)); };
+    l = tangent(frame.view.light.direction());
+    v = tangent(frame.view.camera.position() - frame.view.camera.target);
+  }
+
+  // What the centre pixel shows for a base colour of sRGB 0.8.
+  float expected(float metallic, float roughness) const {
+    const float base = core::srgbToLinear(0.8f);
+    return core::gltfBrdf(glm::vec3(base), metallic, roughness, glm::vec3(0.0f, 0.0f, 1.0f), l, v)
+               .x *
+           l.z * core::kPi * frame.view.light.intensity;
+  }
+};
+
 TEST_F(PbrShading, TheDirectionalLightReflectsTheBrdf) {
   offscreen().setMesh(core::makePlane());
-  renderer::FrameSettings frame;
-  frame.output = renderer::FrameOutput::FloatData;
-  frame.view.camera.yawDeg = 0.0f;
-  frame.view.camera.pitchDeg = 89.0f;
-  frame.view.camera.distance = 2.0f;
-  frame.view.light.azimuthDeg = 90.0f;
-  frame.view.light.elevationDeg = 40.0f;
-  frame.view.light.color = glm::vec3(1.0f);
-  frame.view.light.intensity = 1.5f;
-  frame.view.environment.intensity = 0.0f;
-  // World to the plane's tangent space: T = +X, B = -Z, N = +Y.
-  const auto tangent = [](glm::vec3 w) { return glm::normalize(glm::vec3(w.x, -w.z, w.y)); };
-  const glm::vec3 l = tangent(frame.view.light.direction());
-  const glm::vec3 v = tangent(frame.view.camera.position() - frame.view.camera.target);
-  const glm::vec3 n(0.0f, 0.0f, 1.0f);
+  const LitPlane plane;
   for (float metallic : {0.0f, 1.0f}) {
     for (float roughness : {0.3f, 0.7f}) {
       offscreen().setMaterial(pbrMaterial(0.8f, metallic, roughness));
-      core::Result<Image> image = offscreen().render(frame, 33, 33);
+      core::Result<Image> image = offscreen().render(plane.frame, 33, 33);
       ASSERT_TRUE(image.ok()) << image.error();
-      const float base = core::srgbToLinear(0.8f);
-      const float expected = core::gltfBrdf(glm::vec3(base), metallic, roughness, n, l, v).x * l.z *
-                             core::kPi * frame.view.light.intensity;
+      const float expected = plane.expected(metallic, roughness);
       EXPECT_NEAR(image->at(16, 16, 0), expected, 0.02f * expected)
           << "metallic " << metallic << " roughness " << roughness;
     }
@@ -147,24 +160,11 @@ TEST_F(PbrShading, TheDirectionalLightReflectsTheBrdf) {
 }
 
 // The metallic map multiplies the metallic factor (glTF's metallicRoughnessTexture blue): with
-// a map of constant m and factor f the plane of the previous test reflects the BRDF of
-// metallic f m, from core::gltfBrdf, so a map of 0 is a dielectric whatever the factor.
+// a map of constant m and factor f the lit plane reflects the BRDF of metallic f m, so a map
+// of 0 is a dielectric whatever the factor.
 TEST_F(PbrShading, TheMetallicMapMultipliesTheMetallicFactor) {
   offscreen().setMesh(core::makePlane());
-  renderer::FrameSettings frame;
-  frame.output = renderer::FrameOutput::FloatData;
-  frame.view.camera.yawDeg = 0.0f;
-  frame.view.camera.pitchDeg = 89.0f;
-  frame.view.camera.distance = 2.0f;
-  frame.view.light.azimuthDeg = 90.0f;
-  frame.view.light.elevationDeg = 40.0f;
-  frame.view.light.color = glm::vec3(1.0f);
-  frame.view.light.intensity = 1.5f;
-  frame.view.environment.intensity = 0.0f;
-  const auto tangent = [](glm::vec3 w) { return glm::normalize(glm::vec3(w.x, -w.z, w.y)); };
-  const glm::vec3 l = tangent(frame.view.light.direction());
-  const glm::vec3 v = tangent(frame.view.camera.position() - frame.view.camera.target);
-  const float base = core::srgbToLinear(0.8f);
+  const LitPlane plane;
   struct Case {
     float factor, map;
   };
@@ -174,12 +174,9 @@ TEST_F(PbrShading, TheMetallicMapMultipliesTheMetallicFactor) {
     std::fill(map->data(), map->data() + map->valueCount(), c.map);
     material.setMap(MapSlot::Metallic, map);
     offscreen().setMaterial(material);
-    core::Result<Image> image = offscreen().render(frame, 33, 33);
+    core::Result<Image> image = offscreen().render(plane.frame, 33, 33);
     ASSERT_TRUE(image.ok()) << image.error();
-    const float expected =
-        core::gltfBrdf(glm::vec3(base), c.factor * c.map, 0.4f, glm::vec3(0.0f, 0.0f, 1.0f), l, v)
-            .x *
-        l.z * core::kPi * frame.view.light.intensity;
+    const float expected = plane.expected(c.factor * c.map, 0.4f);
     EXPECT_NEAR(image->at(16, 16, 0), expected, 0.02f * expected)
         << "factor " << c.factor << " map " << c.map;
   }
