@@ -264,6 +264,35 @@ TEST_F(ViewportControls, EnvironmentControlsChangeThePbrFrame) {
   expectChange("file");
 }
 
+// The display and the environment are remembered for the next run, as the light is: closing
+// the window saves them and a new window starts with them, the Environment group showing them.
+// A remembered file that has gone gives the studio.
+TEST_F(ViewportControls, TheDisplayAndEnvironmentAreRememberedForTheNextRun) {
+  core::Environment environment;
+  environment.source = "sky";
+  environment.intensity = 2.5f;
+  environment.rotationDeg = 45.0f;
+  environment.background = core::Background::Blurred;
+  core::DisplayTransform display;
+  display.exposureEv = 1.5f;
+  display.toneMapper = core::ToneMapper::Aces;
+  viewport()->setEnvironment(environment);
+  viewport()->setDisplayTransform(display);
+  ASSERT_TRUE(m_window->close());
+
+  ui::MainWindow next;
+  EXPECT_EQ(next.viewport()->view().environment, environment);
+  EXPECT_EQ(next.viewport()->view().display, display);
+  EXPECT_EQ(next.lightPanel()->environmentPanel()->sourceBox()->currentData().toString(),
+            QStringLiteral("sky"));
+
+  environment.source = scratchFolder() + "/gone.exr";
+  next.viewport()->setEnvironment(environment);
+  ASSERT_TRUE(next.close());
+  ui::MainWindow third;
+  EXPECT_EQ(third.viewport()->view().environment.source, "studio");
+}
+
 TEST_F(ViewportControls, MeshesAndTheSplitComparisonChangeTheFrame) {
   QComboBox* meshes = m_window->meshBox();
   core::Image previous = grabbed();

@@ -2,6 +2,7 @@
 #include "ui/window/AppSettings.h"
 
 #include "core/mesh/MeshPrimitives.h"
+#include "core/shading/EnvironmentMaps.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -128,6 +129,58 @@ void setViewportLight(const core::DirectionalLight& light) {
   settings.setValue(QStringLiteral("ambient"), light.ambient);
   settings.setValue(QStringLiteral("color"),
                     QList<QVariant>{light.color.r, light.color.g, light.color.b});
+}
+
+core::DisplayTransform viewportDisplay() {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("viewport/display"));
+  core::DisplayTransform display;
+  display.exposureEv =
+      std::clamp(settings.value(QStringLiteral("exposure"), display.exposureEv).toFloat(),
+                 core::DisplayTransform::kMinExposureEv, core::DisplayTransform::kMaxExposureEv);
+  const std::string toneMapper =
+      settings.value(QStringLiteral("toneMapping")).toString().toStdString();
+  if (const auto found = core::findToneMapper(toneMapper))
+    display.toneMapper = *found;
+  return display;
+}
+
+void setViewportDisplay(const core::DisplayTransform& display) {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("viewport/display"));
+  settings.setValue(QStringLiteral("exposure"), display.exposureEv);
+  settings.setValue(QStringLiteral("toneMapping"),
+                    QString::fromUtf8(core::toneMapperName(display.toneMapper)));
+}
+
+core::Environment viewportEnvironment() {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("viewport/environment"));
+  core::Environment environment;
+  const QString source = settings.value(QStringLiteral("source")).toString();
+  if (core::findBuiltInEnvironment(source.toStdString()) || QFileInfo::exists(source))
+    environment.source = source.toStdString();
+  environment.intensity =
+      std::clamp(settings.value(QStringLiteral("intensity"), environment.intensity).toFloat(), 0.0f,
+                 core::Environment::kMaxIntensity);
+  environment.rotationDeg =
+      std::clamp(settings.value(QStringLiteral("rotation"), environment.rotationDeg).toFloat(),
+                 -360.0f, 360.0f);
+  const std::string background =
+      settings.value(QStringLiteral("background")).toString().toStdString();
+  if (const auto found = core::findBackground(background))
+    environment.background = *found;
+  return environment;
+}
+
+void setViewportEnvironment(const core::Environment& environment) {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("viewport/environment"));
+  settings.setValue(QStringLiteral("source"), QString::fromStdString(environment.source));
+  settings.setValue(QStringLiteral("intensity"), environment.intensity);
+  settings.setValue(QStringLiteral("rotation"), environment.rotationDeg);
+  settings.setValue(QStringLiteral("background"),
+                    QString::fromUtf8(core::backgroundName(environment.background)));
 }
 
 }  // namespace relief::ui::settings

@@ -1,10 +1,12 @@
 // AppSettings: what Relief remembers between runs (QSettings, under the organisation and
 // application names main() sets): recent files, last folders per purpose, the preferences,
-// and the viewport's light and mesh for new documents. Window geometry and dock layout are
-// stored by MainWindow itself with saveGeometry()/saveState().
+// and the viewport's light, display, environment and mesh for new documents. Window geometry and
+// dock layout are stored by MainWindow itself with saveGeometry()/saveState().
 #pragma once
 
 #include "core/view/DirectionalLight.h"
+#include "core/view/DisplayTransform.h"
+#include "core/view/Environment.h"
 
 #include <QString>
 #include <QStringList>
@@ -38,5 +40,11 @@ void setDefaultMesh(const QString& mesh);
 // The viewport's light as last left, for the next run.
 core::DirectionalLight viewportLight();
 void setViewportLight(const core::DirectionalLight& light);
+// The display (exposure, tone mapping) and the environment as last left. A remembered
+// environment file that no longer exists gives the default environment (the studio).
+core::DisplayTransform viewportDisplay();
+void setViewportDisplay(const core::DisplayTransform& display);
+core::Environment viewportEnvironment();
+void setViewportEnvironment(const core::Environment& environment);
 
 }  // namespace relief::ui::settings

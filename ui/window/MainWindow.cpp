@@ -137,6 +137,8 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_document, &MaterialDocument::materialReset, this, &MainWindow::updateTitle);
   connect(m_document, &MaterialDocument::fileSaved, this, &MainWindow::updateTitle);
   m_viewport->setLight(settings::viewportLight());
+  m_viewport->setDisplayTransform(settings::viewportDisplay());
+  m_viewport->setEnvironment(settings::viewportEnvironment());
   m_viewport->setNativeCompressedUploads(settings::nativeCompressedUploads());
   resize(1400, 860);
   restoreWindowState();
@@ -437,6 +439,8 @@ void MainWindow::saveWindowState() {
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());
   settings::setViewportLight(m_viewport->view().light);
+  settings::setViewportDisplay(m_viewport->view().display);
+  settings::setViewportEnvironment(m_viewport->view().environment);
 }
 
 void MainWindow::showShortcuts() {
