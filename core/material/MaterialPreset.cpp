@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace relief::core::inline material {
 namespace {
@@ -143,6 +144,7 @@ MapCompression readCompression(const QJsonObject& object, const std::string& slo
 void readMaps(const QJsonObject& object, const std::string& path, Preset& preset,
               Problems& problems) {
   const QDir presetDir = QFileInfo(QString::fromStdString(path)).absoluteDir();
+  std::map<std::string, std::shared_ptr<const Image>> packedFiles;  // by path
   for (auto it = object.begin(); it != object.end(); ++it) {
     const std::string name = it.key().toStdString();
     const std::optional<MapSlot> slot = findMapSlot(name);
@@ -173,10 +175,18 @@ void readMaps(const QJsonObject& object, const std::string& path, Preset& preset
       continue;
     }
     const std::string mapPath = QDir::cleanPath(presetDir.absoluteFilePath(relative)).toStdString();
-    Result<Image> image = loadMapFile(mapPath);
+    // The slots of one packed file (an ORM texture's three) decode it once.
+    const bool packed = entry.contains(QStringLiteral("channel"));
+    std::shared_ptr<const Image> image = packed ? packedFiles[mapPath] : nullptr;
     if (!image) {
-      problems.add(name + " map not loaded: " + image.error());
-      continue;
+      Result<Image> loaded = loadMapFile(mapPath);
+      if (!loaded) {
+        problems.add(name + " map not loaded: " + loaded.error());
+        continue;
+      }
+      image = std::make_shared<const Image>(std::move(loaded).value());
+      if (packed)
+        packedFiles[mapPath] = image;
     }
     // "channel": the map is one channel of the file (an ORM texture's G is the roughness).
     int channel = -1;
@@ -195,8 +205,8 @@ void readMaps(const QJsonObject& object, const std::string& path, Preset& preset
       }
       channel = *index;
     }
-    auto map = std::make_shared<Image>(channel >= 0 ? channelImage(image.value(), channel)
-                                                    : std::move(image).value());
+    auto map = channel >= 0 ? std::make_shared<const Image>(channelImage(*image, channel))
+                            : std::move(image);
     preset.material.setMap(*slot, std::move(map), mapPath, channel);
   }
 }
