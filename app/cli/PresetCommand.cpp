@@ -8,8 +8,6 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
-#include <cctype>
-
 namespace relief::cli {
 namespace {
 
@@ -138,12 +136,10 @@ int info(const QString& path, bool json) {
     const core::MaterialMap& map = material.map(slot);
     if (!map.image)
       continue;
-    const QString source =
-        QString::fromStdString(map.sourcePath) +
-        (map.sourceChannel >= 0 ? QStringLiteral(" channel %1")
-                                      .arg(QChar::fromLatin1(char(
-                                          std::toupper(core::channelLetter(map.sourceChannel)))))
-                                : QString());
+    QString source = QString::fromStdString(map.sourcePath);
+    if (map.sourceChannel >= 0)
+      source += QStringLiteral(" channel %1")
+                    .arg(QChar::fromLatin1(core::channelLetter(map.sourceChannel)).toUpper());
     text += QStringLiteral("  %1 %2 (%3x%4, %5 channel(s), %6 bit, %7)")
                 .arg(qstr(core::mapSlotName(slot)) + QLatin1Char(':'), -10)
                 .arg(source)

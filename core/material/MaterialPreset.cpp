@@ -190,7 +190,7 @@ void readMaps(const QJsonObject& object, const std::string& path, Preset& preset
     }
     // "channel": the map is one channel of the file (an ORM texture's G is the roughness).
     int channel = -1;
-    if (entry.contains(QStringLiteral("channel"))) {
+    if (packed) {
       const std::string letter = entry.value(QStringLiteral("channel")).toString().toStdString();
       const std::optional<int> index = channelFromLetter(letter);
       if (!index) {

@@ -1,8 +1,8 @@
 // MapFileLoader: puts image files into the material's map slots for the main window (File >
 // Open Map, a slot's Load button, drops). The slot is the one asked for, else the one the file
 // name hints at (_normal, _height, ...; _orm and _arm fill three slots), else the one the user
-// picks; a file that cannot be read
-// is reported in a dialog naming it, and the document is left as it was.
+// picks; a file that cannot be read is reported in a dialog naming it, and the document is
+// left as it was.
 #pragma once
 
 #include "core/material/MapSlot.h"
