@@ -67,24 +67,6 @@ Status validateSpec(const std::string& path, const OIIO::ImageSpec& spec) {
   return {};
 }
 
-// A PNG's pixels are deflate-compressed, and deflate never compresses better than 1032:1: a
-// file too small to hold its header's size even so is damaged or hostile. Checked before the
-// pixels' memory is allocated (a 300-byte file claiming 16384x16384 RGBA would take 4 GiB).
-Status checkPngCanHoldPixels(const std::string& path, const OIIO::ImageSpec& spec,
-                             std::uintmax_t fileBytes) {
-  constexpr double kDeflateBestRatio = 1032.0;
-  const double bits = spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8));
-  const double rowBytes = 1.0 + std::ceil(double(spec.width) * spec.nchannels * bits / 8.0);
-  const double rawBytes = rowBytes * spec.height;  // each row starts with its filter byte
-  if (double(fileBytes) * kDeflateBestRatio < rawBytes) {
-    return makeError(path + ": " + std::to_string(fileBytes) + " bytes cannot hold " +
-                     std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                     " pixels even at deflate's best ratio (1:1032); the file is cut short or "
-                     "its header is damaged");
-  }
-  return {};
-}
-
 // What a file's first bytes say it is. DDS and KTX2 are Relief's own readers' business
 // (core/compression/MapFile.h): OpenImageIO's DDS reader spins forever on uncompressed DDS and
 // accepts truncated files, so a DDS renamed to .png is caught here too. For images, the
@@ -165,10 +147,6 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
   }
   if (Status valid = validateSpec(path, input->spec()); !valid) {
     return makeError(valid.error());
-  }
-  if (std::string_view(input->format_name()) == "png") {
-    if (Status holds = checkPngCanHoldPixels(path, input->spec(), readable.value()); !holds)
-      return makeError(holds.error());
   }
   return input;
 }

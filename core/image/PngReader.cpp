@@ -36,10 +36,13 @@ struct Header {
   int bitDepth = 0, colourType = 0, interlace = 0;
 };
 
-int channelsOf(int colourType) {
+// Samples per pixel as stored (PNG section 6.1), 0 for reserved types.
+int storedSamplesOf(int colourType) {
   switch (colourType) {
     case 0:
       return 1;  // grey
+    case 3:
+      return 1;  // palette index
     case 4:
       return 2;  // grey and alpha
     case 2:
@@ -47,9 +50,27 @@ int channelsOf(int colourType) {
     case 6:
       return 4;  // RGBA
     default:
-      return 0;  // palette (3) and reserved types: OpenImageIO's
+      return 0;
   }
 }
+
+bool allowedDepth(int colourType, int bitDepth) {
+  switch (colourType) {
+    case 0:
+      return bitDepth == 1 || bitDepth == 2 || bitDepth == 4 || bitDepth == 8 || bitDepth == 16;
+    case 3:
+      return bitDepth == 1 || bitDepth == 2 || bitDepth == 4 || bitDepth == 8;
+    default:
+      return bitDepth == 8 || bitDepth == 16;
+  }
+}
+
+// The palette and its alphas (PLTE, tRNS), as 8-bit RGBA entries.
+struct Palette {
+  int entries = 0;
+  bool hasAlpha = false;
+  std::uint8_t rgba[256][4] = {};
+};
 
 // Undoes one row's filter in place (PNG section 9.2). `above` is the previous unfiltered row, or
 // null for the first row, whose "above" bytes are zero.
@@ -114,6 +135,7 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
   // Walk the chunks; the IDAT payloads are moved together to the front of `bytes` (the file's
   // own buffer, so no second copy of the compressed stream).
   Header header;
+  Palette palette;
   bool sawHeader = false, sawEnd = false;
   std::size_t compressed = 0;
   std::size_t at = sizeof kSignature;
@@ -141,24 +163,43 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
     } else if (std::memcmp(type, "IDAT", 4) == 0) {
       std::memmove(&bytes[compressed], data, length);  // never overlaps forward: compressed < at
       compressed += length;
-    } else if (std::memcmp(type, "PLTE", 4) == 0 || std::memcmp(type, "tRNS", 4) == 0) {
-      return PngFastDecode::NotHandled;  // palettes and colour-key transparency: OpenImageIO's
+    } else if (std::memcmp(type, "PLTE", 4) == 0) {
+      if (length % 3 != 0 || length / 3 > 256 || length == 0)
+        return damaged(path, "the palette (PLTE) has " + std::to_string(length) + " bytes");
+      palette.entries = int(length / 3);
+      for (int i = 0; i < palette.entries; ++i) {
+        std::memcpy(palette.rgba[i], data + 3 * i, 3);
+        palette.rgba[i][3] = 255;
+      }
+    } else if (std::memcmp(type, "tRNS", 4) == 0) {
+      if (header.colourType != 3)
+        return PngFastDecode::NotHandled;  // colour-key transparency of grey or RGB: OpenImageIO's
+      if (length > std::uint32_t(palette.entries))
+        return damaged(path, "the transparency chunk (tRNS) has more entries than the palette");
+      for (std::uint32_t i = 0; i < length; ++i)
+        palette.rgba[i][3] = data[i];
+      palette.hasAlpha = true;
     } else if (std::memcmp(type, "IEND", 4) == 0) {
       sawEnd = true;
     }
     at += std::size_t(length) + 12;
   }
-  const int channels = channelsOf(header.colourType);
-  if (!sawHeader || channels == 0 || header.interlace != 0 ||
-      (header.bitDepth != 8 && header.bitDepth != 16))
+  const int samples = storedSamplesOf(header.colourType);
+  if (!sawHeader || samples == 0 || header.interlace != 0 ||
+      !allowedDepth(header.colourType, header.bitDepth))
     return PngFastDecode::NotHandled;
+  const bool indexed = header.colourType == 3;
+  if (indexed && palette.entries == 0)
+    return damaged(path, "a palette image without a palette (PLTE)");
+  // Palette images expand to RGB, or RGBA when tRNS gives alphas, as libpng expands them.
+  const int channels = indexed ? (palette.hasAlpha ? 4 : 3) : samples;
   if (header.width != std::uint32_t(image.width()) ||
       header.height != std::uint32_t(image.height()) || channels != image.channels())
     return PngFastDecode::NotHandled;  // OpenImageIO saw something else; trust its reading
 
-  const std::size_t bytesPerSample = std::size_t(header.bitDepth / 8);
-  const std::size_t bytesPerPixel = bytesPerSample * std::size_t(channels);
-  const std::size_t rowBytes = bytesPerPixel * header.width;
+  const std::size_t bitsPerPixel = std::size_t(header.bitDepth) * std::size_t(samples);
+  const std::size_t bytesPerPixel = std::max<std::size_t>(1, bitsPerPixel / 8);  // for filters
+  const std::size_t rowBytes = (bitsPerPixel * header.width + 7) / 8;
   const std::size_t inflatedBytes = (rowBytes + 1) * header.height;
   if (inflatedBytes > kMaxInflatedBytes)
     return PngFastDecode::NotHandled;
@@ -197,7 +238,30 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
                                std::to_string(int(line[0])));
     }
   }
+  // Samples of fewer than 8 bits are packed from the high bits down (section 7.2); grey ones
+  // scale to 8 bits as libpng expands them (v * 255 / (2^depth - 1)), so the floats match.
+  const int depth = header.bitDepth;
+  const auto packedSample = [depth](const std::uint8_t* source, std::size_t i) {
+    const std::size_t bit = i * std::size_t(depth);
+    return (source[bit / 8] >> (8 - depth - int(bit % 8))) & ((1 << depth) - 1);
+  };
+  if (indexed) {
+    // An index past the palette's end is an error (section 11.2.3); libpng reads it as black.
+    for (std::uint32_t y = 0; y < header.height; ++y) {
+      const std::uint8_t* source = raw.get() + std::size_t(y) * (rowBytes + 1) + 1;
+      for (std::uint32_t x = 0; x < header.width; ++x) {
+        const int index = depth == 8 ? source[x] : packedSample(source, x);
+        if (index >= palette.entries) {
+          return damaged(path, "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                   ") uses palette index " + std::to_string(index) +
+                                   "; the palette has " + std::to_string(palette.entries) +
+                                   " entries");
+        }
+      }
+    }
+  }
   const std::size_t values = std::size_t(header.width) * std::size_t(channels);
+  const int greyScale = depth < 8 ? 255 / ((1 << depth) - 1) : 1;
   const int blocks = int((header.height + kRowsPerBlock - 1) / kRowsPerBlock);
   parallelFor(blocks, [&](int block) {
     const int first = block * kRowsPerBlock;
@@ -205,7 +269,17 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
     for (int y = first; y < last; ++y) {
       const std::uint8_t* source = raw.get() + std::size_t(y) * (rowBytes + 1) + 1;
       float* target = image.pixel(0, y);
-      if (bytesPerSample == 2) {
+      if (indexed) {
+        for (std::uint32_t x = 0; x < header.width; ++x) {
+          const std::uint8_t* entry =
+              palette.rgba[depth == 8 ? source[x] : packedSample(source, x)];
+          for (int c = 0; c < channels; ++c)
+            *target++ = float(entry[c]) * (1.0f / 255.0f);
+        }
+      } else if (depth < 8) {
+        for (std::size_t i = 0; i < values; ++i)
+          target[i] = float(packedSample(source, i) * greyScale) * (1.0f / 255.0f);
+      } else if (depth == 16) {
         for (std::size_t i = 0; i < values; ++i)
           target[i] = float(source[2 * i] << 8 | source[2 * i + 1]) * (1.0f / 65535.0f);
       } else {

@@ -204,9 +204,10 @@ TEST(PngReader, UndoesHandWrittenFiltersToKnownValues) {
     EXPECT_EQ(image.data()[i], libpng[i]) << "value " << i;
 }
 
-// Colour-key transparency and palettes are OpenImageIO's: the fast path declines them and
-// loadImage still reads them right (a grey image with tRNS gains an alpha channel).
-TEST(PngReader, LeavesTransparencyChunksAndPalettesToOpenImageIO) {
+// Colour-key transparency of grey and RGB images is OpenImageIO's: the fast path declines it and
+// loadImage still reads it right (a grey image with tRNS gains an alpha channel). Palettes are
+// the fast path's, expanded to the palette's colours.
+TEST(PngReader, LeavesColourKeysToOpenImageIOAndExpandsPalettes) {
   const std::vector<std::uint8_t> filtered = {0, 7, 9};
   const std::string keyed = scratchFolder() + "/keyed.png";
   writeBytes(keyed, handMadePng(2, 1, 0, filtered, {{"tRNS", {0, 9}}}));
@@ -225,7 +226,11 @@ TEST(PngReader, LeavesTransparencyChunksAndPalettesToOpenImageIO) {
   Image rgb(2, 1, 3);
   const Result<PngFastDecode> palette = decodePngPixels(indexed, rgb);
   ASSERT_TRUE(palette.ok()) << palette.error();
-  EXPECT_EQ(palette.value(), PngFastDecode::NotHandled);
+  EXPECT_EQ(palette.value(), PngFastDecode::Decoded);
+  EXPECT_EQ(rgb.at(0, 0, 0), 1.0f);  // index 0: red
+  EXPECT_EQ(rgb.at(0, 0, 2), 0.0f);
+  EXPECT_EQ(rgb.at(1, 0, 0), 0.0f);  // index 1: blue
+  EXPECT_EQ(rgb.at(1, 0, 2), 1.0f);
   const Result<Image> colours = loadImage(indexed);
   ASSERT_TRUE(colours.ok()) << colours.error();
   EXPECT_EQ(colours->at(1, 0, 2), 1.0f);
