@@ -413,6 +413,7 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
   program.setUniformValue("uHeightMapSize", heightSource ? QVector2D(float(heightSource->width()),
                                                                      float(heightSource->height()))
                                                          : QVector2D(1.0f, 1.0f));
+  program.setUniformValue("uHeightQuantum", heightQuantum(heightSource));
 
   program.setUniformValue("uColorMap", kFirstMapUnit + int(MapSlot::Color));
   program.setUniformValue("uNormalMap", kFirstMapUnit + int(MapSlot::Normal));
@@ -420,6 +421,16 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
   program.setUniformValue("uOcclusionMap", kFirstMapUnit + int(MapSlot::AmbientOcclusion));
   program.setUniformValue("uRoughnessMap", kFirstMapUnit + int(MapSlot::Roughness));
   program.setUniformValue("uMetallicMap", kFirstMapUnit + int(MapSlot::Metallic));
+}
+
+// The step between a height map's stored levels, in normalised height: self-shadow rays start
+// above it (shaders/include/self_shadow.glsl). Float maps, and maps of unknown origin (made in
+// memory by a generator), have none.
+float MaterialRenderer::heightQuantum(const core::Image* height) {
+  const int bits = height ? height->sourceBitsPerChannel() : 0;
+  if (bits < 1 || bits > 16)
+    return 0.0f;
+  return 1.0f / float((1 << bits) - 1);
 }
 
 std::pair<int, int> MaterialRenderer::reducedSize(int width, int height, float scale) {

@@ -53,6 +53,9 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
                              unsigned framebuffer);
   // The pixel size renderReduced draws at for a scale (at least 1x1).
   static std::pair<int, int> reducedSize(int width, int height, float scale);
+  // The step between the height map's stored levels in normalised height (1/255 for an 8-bit
+  // file, 1/65535 for 16 bits), 0 for float or unknown: where self-shadow rays start above.
+  static float heightQuantum(const core::Image* height);
 
   // Renders into an offscreen framebuffer and reads it back: RGBA8 sRGB for Display output,
   // RGBA32F for data. Rows top first. A `scale` below 1 draws as renderReduced does.

@@ -81,7 +81,7 @@ void main() {
 #endif
 
   int samples = visible.samples;
-  float shadow = selfShadow(visible.uv, visible.height, L, dx, dy, scale, samples);
+  float shadow = selfShadow(visible.uv, visible.height, L, dx, dy, scale, mipLevel, samples);
 
 #ifdef TECHNIQUE_DISPLACEMENT
   vec3 displaced = vIn.worldPosition;  // the tessellation stage moved the geometry there

@@ -25,6 +25,7 @@ enum class ParamId {
   // Sampling
   MinSamples,
   MaxSamples,
+  SamplesPerTexel,
   RefinementSteps,
   LodFade,
   MaxTessellation,

@@ -10,12 +10,14 @@ uniform sampler2D uOcclusionMap;
 uniform sampler2D uRoughnessMap;
 uniform sampler2D uMetallicMap;
 uniform vec2 uHeightMapSize;    // texels, for views measured in texels
+uniform float uHeightQuantum;   // the height map's step: 1/255 for 8 bits, 0 for float
 
 uniform float uHeightScale;     // UV units spanned by heights 0..1
 uniform float uHeightBias;      // UV units; -uHeightScale puts the top on the surface
 uniform bool uHeightIsDepth;    // the height map stores depth (white = deepest)
 uniform int uMinSamples;        // view-ray samples looking straight on (reference 001)
 uniform int uMaxSamples;        // view-ray samples at grazing angles
+uniform float uSamplesPerTexel; // view-ray samples per height texel crossed; 0: by angle only
 uniform int uRefinementSteps;   // relief mapping's binary search steps
 uniform float uLodFade;         // mip level where the relief has faded out; 0 = never
 uniform int uMaxTessellation;   // displacement: most segments per triangle edge

@@ -24,12 +24,29 @@ ParallaxResult parallaxOffset(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, fl
   return result;
 }
 
-// Steep parallax, POM and relief mapping march the slab from the top (h = 1) down in equal
-// height layers; the count is lerped from maxSamples to minSamples by V.z (reference 001:
-// lerp(max, min, dot(E, N))), so straight-on views take few samples.
-ParallaxResult marchHeightField(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias) {
+// The layers a march takes. Reference 001 names one sample per texel the ray crosses as the
+// ideal: fewer and a wall thinner than a layer is stepped over, which shows as slices at grazing
+// angles. The ray crosses scale * |V.xy| / V.z of the texture through the slab, counted in texels
+// of the mip level the lookups read (a minified map needs no more than its level's texels);
+// uSamplesPerTexel of them per texel, between min and max samples. With uSamplesPerTexel 0, the
+// count is lerped from max to min by V.z (reference 001: lerp(max, min, dot(E, N))).
+int marchLayers(vec3 V, float scale, float mipLevel) {
   float vz = max(V.z, 1e-4);
-  int layers = max(int(mix(float(uMaxSamples), float(uMinSamples), clamp(vz, 0.0, 1.0))), 1);
+  if (uSamplesPerTexel <= 0.0)
+    return max(int(mix(float(uMaxSamples), float(uMinSamples), clamp(vz, 0.0, 1.0))), 1);
+  vec2 crossedTexels = scale * V.xy / vz * uHeightMapSize / exp2(max(mipLevel, 0.0));
+  float wanted = ceil(length(crossedTexels) * uSamplesPerTexel);
+  float fewest = float(max(min(uMinSamples, uMaxSamples), 1));
+  float most = float(max(max(uMinSamples, uMaxSamples), 1));
+  return int(clamp(wanted, fewest, most));
+}
+
+// Steep parallax, POM and relief mapping march the slab from the top (h = 1) down in equal
+// height layers (marchLayers gives how many).
+ParallaxResult marchHeightField(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias,
+                                float mipLevel) {
+  float vz = max(V.z, 1e-4);
+  int layers = marchLayers(V, scale, mipLevel);
   float layerStep = 1.0 / float(layers);
   // UV per unit of normalised height: moving down one layer moves the ray by this times step.
   vec2 uvPerHeight = scale * V.xy / vz;
@@ -126,7 +143,7 @@ ParallaxResult findVisiblePoint(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, 
 #elif defined(TECHNIQUE_PARALLAX_LIMITED)
   return parallaxOffset(uv, V, dx, dy, scale, bias, true);
 #elif defined(TECHNIQUE_STEEP) || defined(TECHNIQUE_POM) || defined(TECHNIQUE_RELIEF)
-  return marchHeightField(uv, V, dx, dy, scale, bias);
+  return marchHeightField(uv, V, dx, dy, scale, bias, mipLevel);
 #else  // TECHNIQUE_NORMAL, TECHNIQUE_DISPLACEMENT (its geometry is displaced: material.tese)
   ParallaxResult result;
   result.uv = uv;

@@ -3,12 +3,42 @@
 // the ray. Soft (after Tatarchuk's penumbra estimate): the steepest occluder seen along the
 // light ray, as an angle, against the light's angular size gives the covered part of the
 // light. Returns the shadowed fraction (0 lit, 1 fully shadowed) and counts samples.
+//
+// The ray starts above the surface's own quantisation. An 8-bit height map stores a gentle
+// slope as a staircase of 1/255 steps and a flat tile top with a level or two of noise (JPEG);
+// a ray that starts on it meets a one-step wall at once and the pixel shadows itself (acne:
+// grey speckles and dashes on flat tops). It starts from the higher of the traced point and the
+// filtered height there (a march's interpolated hit can lie a little inside the surface), raised
+// by kShadowStartQuanta of the map's quantum (uHeightQuantum: 1/255 for 8 bits, 1/65535 for
+// 16). In UV units the lift is that times the height scale, so it shrinks with the relief and
+// never exceeds two levels of the map: no shadow an artist painted is lost.
 
-float selfShadow(vec2 uv, float height, vec3 L, vec2 dx, vec2 dy, float scale,
+const float kShadowStartQuanta = 2.0;
+// Float maps have no quantum; this floor covers the march's own rounding.
+const float kShadowMinQuantum = 1.0 / 4096.0;
+
+float shadowRayStart(vec2 uv, float height, vec2 dx, vec2 dy, float mipLevel,
+                     inout int samples) {
+  ++samples;
+  float filtered = sampleHeight(uv, dx, dy);
+  float surface = max(height, filtered);
+#if defined(TECHNIQUE_QUADTREE) || defined(TECHNIQUE_CONE)
+  // Minified, the exact tracers return a pyramid block's top (quadtree.glsl, cone.glsl): the
+  // highest texel under the pixel, above the low mortar that the filtered shading still shows.
+  // A ray from there is never shadowed, so shadows ended in a hard line where the map's first
+  // mip level began. From the filtered height, as the marches start, they continue past it.
+  if (mipLevel >= 1.0) surface = filtered;
+#endif
+  return surface + kShadowStartQuanta * max(uHeightQuantum, kShadowMinQuantum);
+}
+
+float selfShadow(vec2 uv, float height, vec3 L, vec2 dx, vec2 dy, float scale, float mipLevel,
                  inout int samples) {
 #if defined(SHADOW_HARD) || defined(SHADOW_SOFT)
   if (L.z <= 0.0) return 1.0;  // the light is below the surface's horizon
-  if (height >= 1.0 || scale <= 0.0) return 0.0;
+  if (scale <= 0.0) return 0.0;
+  height = shadowRayStart(uv, height, dx, dy, mipLevel, samples);
+  if (height >= 1.0) return 0.0;
   int steps = max(uShadowSamples, 1);
   float heightStep = (1.0 - height) / float(steps);
   // Welsh's limit drops the 1/L.z, so low lights do not stretch shadows across the surface.
