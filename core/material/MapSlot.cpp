@@ -13,16 +13,38 @@ struct SlotInfo {
   std::string_view name;
   std::string_view label;
   std::array<std::string_view, 6> hints;  // matched as whole words of the file stem
+  // Short suffixes game data uses ("wall_n.png", "floor_hm.jpg": Cube 2 and Red Eclipse name
+  // their texture slots 0/d, n, z, s), matched only as the stem's last word: "n" or "d" in the
+  // middle of a name says nothing.
+  std::array<std::string_view, 4> suffixes;
 };
 
 constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
-    {"color", "Colour", {"color", "colour", "albedo", "diffuse", "basecolor", "diff"}},
-    {"normal", "Normal", {"normal", "nrm", "norm", "nor", "normalgl", "normaldx"}},
-    {"height", "Height", {"height", "disp", "displacement", "bump", "depth", "parallax"}},
-    {"ao", "Ambient occlusion", {"ao", "occlusion", "ambientocclusion", "", "", ""}},
-    {"roughness", "Roughness", {"roughness", "rough", "rgh", "", "", ""}},
-    {"metallic", "Metallic", {"metallic", "metalness", "metal", "mtl", "", ""}},
+    {"color",
+     "Colour",
+     {"color", "colour", "albedo", "diffuse", "basecolor", "diff"},
+     {"d", "cc", "col", "c"}},
+    {"normal",
+     "Normal",
+     {"normal", "nrm", "norm", "nor", "normalgl", "normaldx"},
+     {"n", "nm", "nml", ""}},
+    {"height",
+     "Height",
+     {"height", "disp", "displacement", "bump", "depth", "parallax"},
+     {"z", "h", "hm", "heightmap"}},
+    {"ao",
+     "Ambient occlusion",
+     {"ao", "occlusion", "ambientocclusion", "", "", ""},
+     {"occ", "", "", ""}},
+    {"roughness", "Roughness", {"roughness", "rough", "rgh", "", "", ""}, {"", "", "", ""}},
+    {"metallic", "Metallic", {"metallic", "metalness", "metal", "mtl", "", ""}, {"", "", "", ""}},
 }};
+
+// Specular and gloss maps: Relief's materials have no slot for them (roughness is the
+// metallic-roughness counterpart of gloss, inverted), so they are recognised, never guessed
+// into another slot.
+constexpr std::array<std::string_view, 6> kSpecularWords = {"spec",  "specular",   "sc",
+                                                            "gloss", "glossiness", "s"};
 
 std::string lowerStem(std::string_view fileName) {
   std::string name(fileName);
@@ -81,14 +103,31 @@ std::vector<std::string> stemWords(std::string_view fileName) {
 std::optional<MapSlot> guessMapSlotFromFileName(std::string_view fileName) {
   // The last matching word wins: "brick_normal_height" is a height map of bricks.
   std::optional<MapSlot> found;
-  for (const std::string& word : stemWords(fileName)) {
+  const std::vector<std::string> words = stemWords(fileName);
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const bool last = i + 1 == words.size() && words.size() > 1;
     for (MapSlot slot : kAllMapSlots) {
-      const auto& hints = kSlots[std::size_t(slot)].hints;
-      if (std::find(hints.begin(), hints.end(), word) != hints.end())
+      const SlotInfo& info = kSlots[std::size_t(slot)];
+      const bool hint =
+          std::find(info.hints.begin(), info.hints.end(), words[i]) != info.hints.end();
+      const bool suffix =
+          last && !words[i].empty() &&
+          std::find(info.suffixes.begin(), info.suffixes.end(), words[i]) != info.suffixes.end();
+      if (hint || suffix)
         found = slot;
     }
   }
   return found;
+}
+
+bool isSpecularFileName(std::string_view fileName) {
+  const std::vector<std::string> words = stemWords(fileName);
+  if (words.size() < 2)
+    return false;
+  // A hint of a slot later in the name wins ("spec_normal" is a normal map).
+  return std::find(kSpecularWords.begin(), kSpecularWords.end(), words.back()) !=
+             kSpecularWords.end() &&
+         !guessMapSlotFromFileName(fileName);
 }
 
 bool isOrmFileName(std::string_view fileName) {

@@ -27,8 +27,12 @@ std::optional<MapSlot> findMapSlot(std::string_view name);
 ColorSpace mapSlotColorSpace(MapSlot slot);
 
 // Guesses the slot from a file name's hints (_height, _normal, _color, _albedo, _diffuse, ...),
-// case-insensitively; nullopt when the name says nothing.
+// and from the short suffixes of game data as the name's last word (_n, _nm, _z, _h, _hm, _d,
+// _cc), case-insensitively; nullopt when the name says nothing.
 std::optional<MapSlot> guessMapSlotFromFileName(std::string_view fileName);
+// True when the name ends in a specular or gloss suffix (_s, _spec, _sc, _gloss): a map Relief
+// has no slot for.
+bool isSpecularFileName(std::string_view fileName);
 // True when the name says the file packs occlusion, roughness and metallic in R, G and B
 // (_orm, or _arm as Poly Haven names them).
 bool isOrmFileName(std::string_view fileName);

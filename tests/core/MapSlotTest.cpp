@@ -31,6 +31,34 @@ TEST(MapSlot, DoesNotGuessFromPartsOfWords) {
 }
 
 // Packed occlusion/roughness/metallic files by their engines' names, and nothing else.
+// Game data's short suffixes (Cube 2 and Red Eclipse name their texture slots d, n, z, s), as the
+// name's last word only.
+TEST(MapSlot, GuessesFromGameDataSuffixes) {
+  EXPECT_EQ(guessMapSlotFromFileName("wall_n.png"), MapSlot::Normal);
+  EXPECT_EQ(guessMapSlotFromFileName("stone_ground_tiles_gk_v01_nm.jpg"), MapSlot::Normal);
+  EXPECT_EQ(guessMapSlotFromFileName("stone_ground_tiles_gk_v01_hm.jpg"), MapSlot::Height);
+  EXPECT_EQ(guessMapSlotFromFileName("floor_z.png"), MapSlot::Height);
+  EXPECT_EQ(guessMapSlotFromFileName("floor_H.tga"), MapSlot::Height);
+  EXPECT_EQ(guessMapSlotFromFileName("floor_d.tga"), MapSlot::Color);
+  EXPECT_EQ(guessMapSlotFromFileName("stone_ground_tiles_gk_v01_cc.jpg"), MapSlot::Color);
+  EXPECT_EQ(guessMapSlotFromFileName("floor_diff.png"), MapSlot::Color);
+  EXPECT_EQ(guessMapSlotFromFileName("floor_nrm.png"), MapSlot::Normal);
+  EXPECT_EQ(guessMapSlotFromFileName("floor_rough.png"), MapSlot::Roughness);
+  EXPECT_EQ(guessMapSlotFromFileName("floor_ao.png"), MapSlot::AmbientOcclusion);
+  // Not as a first or middle word, nor alone.
+  EXPECT_EQ(guessMapSlotFromFileName("n_wall.png"), std::nullopt);
+  EXPECT_EQ(guessMapSlotFromFileName("wall_d_final.png"), std::nullopt);
+  EXPECT_EQ(guessMapSlotFromFileName("z.png"), std::nullopt);
+  // Specular and gloss maps have no slot: recognised, never guessed into another.
+  for (const char* name :
+       {"floor_s.png", "floor_spec.jpg", "tiles_gk_v01_sc.jpg", "stone_Gloss.png"}) {
+    EXPECT_EQ(guessMapSlotFromFileName(name), std::nullopt) << name;
+    EXPECT_TRUE(isSpecularFileName(name)) << name;
+  }
+  EXPECT_FALSE(isSpecularFileName("floor_n.png"));
+  EXPECT_FALSE(isSpecularFileName("spec.png"));
+}
+
 TEST(MapSlot, RecognisesOrmTexturesByName) {
   EXPECT_TRUE(isOrmFileName("T_Rock_ORM.png"));
   EXPECT_TRUE(isOrmFileName("/textures/rocky_trail_arm_4k.exr"));  // Poly Haven

@@ -16,10 +16,13 @@
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/MainWindow.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QFileDialog>
+#include <QInputDialog>
 #include <QLabel>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTest>
 #include <QTimer>
 #include <QToolButton>
@@ -141,9 +144,68 @@ TEST_F(MainWindowTest, DroppedFilesGoToTheSlotTheirNamesHint) {
   const core::Material& material = m_window->document()->material();
   EXPECT_EQ(QString::fromStdString(material.map(core::MapSlot::Normal).sourcePath), normal);
   EXPECT_EQ(QString::fromStdString(material.map(core::MapSlot::Height).sourcePath), height);
-  // Each map replacement is its own undo step.
-  EXPECT_EQ(m_window->document()->undoStack()->count(), 2);
+  // A set dropped together is one undo step.
+  EXPECT_EQ(m_window->document()->undoStack()->count(), 1);
   EXPECT_TRUE(m_window->windowTitle().contains(QLatin1Char('*')));
+  m_window->document()->undoStack()->undo();
+  EXPECT_NE(QString::fromStdString(material.map(core::MapSlot::Normal).sourcePath), normal);
+  EXPECT_NE(QString::fromStdString(material.map(core::MapSlot::Height).sourcePath), height);
+}
+
+// File > Open Map takes several files at once, as game data names them (_d, _n, _z), and a file
+// whose name says nothing but whose texels are a normal map's goes to the normal slot without a
+// question: one undo step for the set, and a status message naming each file's slot.
+TEST_F(MainWindowTest, OpenMapTakesASetNamedAsGameDataAndTellsNormalMapsByTheirTexels) {
+  const std::string folder = scratchFolder() + "/ui-game-set";
+  std::filesystem::create_directories(folder);
+  const auto copy = [&](const char* from, const char* to) {
+    std::filesystem::copy_file(sourcePath(from), folder + "/" + to,
+                               std::filesystem::copy_options::overwrite_existing);
+    return QString::fromStdString(folder + "/" + to);
+  };
+  const QString colour = copy("samples/tiles/tiles_color.png", "floor_d.png");
+  const QString height = copy("samples/tiles/tiles_height.png", "floor_z.png");
+  const QString mystery = copy("samples/tiles/tiles_normal.png", "scan0042.png");
+  ui::MaterialDocument* document = m_window->document();
+  const int stepsBefore = document->undoStack()->count();
+
+  int questions = 0;  // a "Which map is this?" question would be a failure: answer and count it
+  QTimer guard;
+  QObject::connect(&guard, &QTimer::timeout, [&] {
+    if (auto* input = qobject_cast<QInputDialog*>(QApplication::activeModalWidget())) {
+      ++questions;
+      input->reject();
+    }
+  });
+  guard.start(50);
+  QTimer::singleShot(200, [&] {
+    auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+    ASSERT_NE(dialog, nullptr);
+    EXPECT_EQ(dialog->fileMode(), QFileDialog::ExistingFiles);
+    dialog->setDirectory(QString::fromStdString(folder));
+    dialog->selectFile(QStringLiteral("\"floor_d.png\" \"floor_z.png\" \"scan0042.png\""));
+    QMetaObject::invokeMethod(dialog, "accept");  // accept() is a protected slot
+  });
+  QAction* openMap = nullptr;
+  for (QAction* action : m_window->findChildren<QAction*>()) {
+    if (action->shortcut() == QKeySequence(QStringLiteral("Ctrl+Shift+O")))
+      openMap = action;
+  }
+  ASSERT_NE(openMap, nullptr);
+  openMap->trigger();
+  guard.stop();
+
+  const core::Material& material = document->material();
+  EXPECT_EQ(QString::fromStdString(material.map(core::MapSlot::Color).sourcePath), colour);
+  EXPECT_EQ(QString::fromStdString(material.map(core::MapSlot::Height).sourcePath), height);
+  EXPECT_EQ(QString::fromStdString(material.map(core::MapSlot::Normal).sourcePath), mystery);
+  EXPECT_EQ(questions, 0);
+  EXPECT_EQ(document->undoStack()->count(), stepsBefore + 1);
+  const QString status = m_window->statusBar()->currentMessage();
+  EXPECT_TRUE(status.contains(QStringLiteral("scan0042.png as the normal map")))
+      << status.toStdString();
+  EXPECT_TRUE(status.contains(QStringLiteral("floor_z.png as the height map")))
+      << status.toStdString();
 }
 
 // An ORM texture (R occlusion, G roughness, B metallic) from the maps panel's "Load ORM…"

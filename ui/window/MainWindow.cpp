@@ -360,13 +360,15 @@ bool MainWindow::saveViewportImage(const QString& path, int width, int height) {
 }
 
 void MainWindow::openFiles(const QStringList& paths) {
+  QStringList maps;
   for (const QString& path : paths) {
-    if (isPresetFile(path)) {
+    if (isPresetFile(path))
       openPreset(path);
-    } else {
-      loadMapFile(path);
-    }
+    else
+      maps << path;
   }
+  if (!maps.isEmpty())
+    m_mapLoader->loadSet(maps);
 }
 
 bool MainWindow::showMesh(const QString& nameOrPath) {

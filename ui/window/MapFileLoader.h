@@ -1,8 +1,8 @@
 // MapFileLoader: puts image files into the material's map slots for the main window (File >
 // Open Map, a slot's Load button, drops). The slot is the one asked for, else the one the file
-// name hints at (_normal, _height, ...; _orm and _arm fill three slots), else the one the user
-// picks; a file that cannot be read is reported in a dialog naming it, and the document is
-// left as it was.
+// name hints at (_normal, _height, game data's _n, _z, _d ...; _orm and _arm fill three slots),
+// else the normal slot when its texels are a normal map's, else the one the user picks; a file
+// that cannot be read is reported in a dialog naming it, and the document is left as it was.
 #pragma once
 
 #include "core/material/MapSlot.h"
@@ -10,6 +10,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 
@@ -25,7 +26,10 @@ class MapFileLoader : public QObject {
 
   // Returns false (after telling the user) when the file cannot be used or the user cancels.
   bool load(const QString& path, std::optional<core::MapSlot> slot = std::nullopt);
-  // Asks for a file (starting in the last map folder), then loads it.
+  // Several files as one undo step (a set opened or dropped together); returns how many loaded.
+  int loadSet(const QStringList& paths);
+  // Asks for a file for `slot`, or for any number of files without one (starting in the last
+  // map folder), then loads them.
   void choose(std::optional<core::MapSlot> slot);
   // An ORM texture (R occlusion, G roughness, B metallic: glTF's and Unreal's packing) into
   // the AO, roughness and metallic slots, as one undo step; false (after telling the user)
@@ -44,6 +48,7 @@ class MapFileLoader : public QObject {
 
   MaterialDocument* m_document;
   QWidget* m_parent;
+  QString m_lastLoaded;  // "file as the normal map", for a set's summary
 };
 
 }  // namespace relief::ui::inline window
