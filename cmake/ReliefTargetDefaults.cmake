@@ -24,10 +24,12 @@ function(relief_target_defaults target)
   endif()
   target_compile_definitions(${target} PRIVATE QT_NO_KEYWORDS
                                                GLM_FORCE_CXX17)
-  # Every sanitized executable carries the runtime's defaults (why: SanitizerDefaults.cpp).
+  # Every sanitized executable carries the runtime's defaults (why: SanitizerDefaults.cpp) and
+  # counts its heap's peak when asked to (HeapPeak.cpp; tests/cli/LargeMapTest.cpp reads it).
   get_target_property(type ${target} TYPE)
   if((RELIEF_SANITIZE OR RELIEF_FUZZ) AND type STREQUAL "EXECUTABLE")
-    target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tools/sanitizers/SanitizerDefaults.cpp)
+    target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tools/sanitizers/SanitizerDefaults.cpp
+                                     ${PROJECT_SOURCE_DIR}/tools/sanitizers/HeapPeak.cpp)
   endif()
 endfunction()
 

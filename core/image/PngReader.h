@@ -3,7 +3,8 @@
 // height maps are often saved with a palette), not interlaced. OpenImageIO's PNG reader (libpng,
 // zlib's streaming inflate, a conversion per scanline) took 350 ms of the 1.4 s that
 // `relief-cli generate normal` spent on a 4096x4096 16-bit map; this one inflates the whole
-// image at once with libdeflate (2.5x zlib's speed) and takes about 150 ms (tools/bench-cli).
+// image at once with libdeflate (2.5x zlib's speed), into the float image's own buffer so that
+// no second copy of the pixels is held, and takes about 150 ms (tools/bench-cli).
 // It also refuses a palette index past the palette's end, which libpng silently reads as black.
 // Interlaced files and the colour-key transparency of grey and RGB images are left to
 // OpenImageIO, which remains the reader of record for the header and colour space.
