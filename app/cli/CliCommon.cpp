@@ -147,20 +147,26 @@ bool acceptPresetProblems(const std::vector<std::string>& problems, bool strict)
   return !strict || problems.empty();
 }
 
-std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh) {
+QString prefixedBy(const QString& namedBy, const std::string& message) {
+  const QString text = QString::fromStdString(message);
+  return namedBy.isEmpty() ? text : namedBy + QStringLiteral(": ") + text;
+}
+
+std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh, const QString& namedBy) {
   const std::string name = meshName.isEmpty() ? std::string("plane") : meshName.toStdString();
   if (const auto shape = core::findPrimitiveShape(name)) {
     mesh = core::makePrimitive(*shape);
     return std::nullopt;
   }
   if (QFileInfo(meshName).suffix().isEmpty() && !QFileInfo::exists(meshName)) {
-    printError(QStringLiteral("--mesh %1: expected %2, or a mesh file")
-                   .arg(meshName, enumNames(core::allPrimitiveShapes(), core::primitiveShapeName)));
+    printError(QStringLiteral("%1 %2: expected %3, or a mesh file")
+                   .arg(namedBy.isEmpty() ? QStringLiteral("--mesh") : namedBy, meshName,
+                        enumNames(core::allPrimitiveShapes(), core::primitiveShapeName)));
     return kExitUsage;
   }
   core::Result<core::ImportedMesh> imported = core::importMesh(name);
   if (!imported) {
-    printError(QString::fromStdString(imported.error()));
+    printError(prefixedBy(namedBy, imported.error()));
     return kExitFailure;
   }
   mesh = std::move(imported->mesh);

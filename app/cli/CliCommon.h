@@ -105,7 +105,13 @@ bool acceptPresetProblems(const std::vector<std::string>& problems, bool strict)
 
 // A mesh by --mesh's value: a primitive's name (plane, cube, ...) or a mesh file; an empty
 // name is the plane. Returns an exit code after printing the problem when it cannot be had.
-std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh);
+// `namedBy` says where a name that did not come from --mesh was read ("m.relief: view.mesh"),
+// so that a bad file's message names the preset and the field as well as the file.
+std::optional<int> resolveMesh(const QString& meshName, core::Mesh& mesh,
+                               const QString& namedBy = {});
+
+// "<namedBy>: <message>", or the message alone when `namedBy` is empty.
+QString prefixedBy(const QString& namedBy, const std::string& message);
 
 // An enum's value names joined with '|', for help and error texts.
 template <class Enum, class NameOf>

@@ -75,10 +75,13 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, core::ExportRe
     return kExitFailure;
   request.preset = std::move(loaded->preset);
   if (core::exportKindInfo(request.kind).usesMesh) {
-    const QString meshName = parser.isSet(QStringLiteral("mesh"))
-                                 ? parser.value(QStringLiteral("mesh"))
-                                 : QString::fromStdString(request.preset.view.mesh);
-    if (auto exit = resolveMesh(meshName, request.mesh))
+    const bool fromPreset = !parser.isSet(QStringLiteral("mesh"));
+    const QString meshName = fromPreset ? QString::fromStdString(request.preset.view.mesh)
+                                        : parser.value(QStringLiteral("mesh"));
+    const QString namedBy =
+        fromPreset ? parser.value(QStringLiteral("preset")) + QStringLiteral(": view.mesh")
+                   : QString();
+    if (auto exit = resolveMesh(meshName, request.mesh, namedBy))
       return *exit;
   }
   return std::nullopt;

@@ -143,6 +143,7 @@ struct RenderRequest {
   bool json = false;
   bool stats = false;
   core::ViewState presetView;  // the preset's camera, light and mesh, used unless overridden
+  QString presetPath;          // as given, for messages about files the preset names
 };
 
 bool loadMapOption(const QCommandLineParser& parser, const QString& option, core::MapSlot slot,
@@ -279,6 +280,7 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
       return kExitFailure;
     request.material = std::move(loaded->preset.material);
     request.presetView = loaded->preset.view;
+    request.presetPath = positional.front();
   }
   if (parser.isSet(QStringLiteral("orm"))) {
     const QString path = parser.value(QStringLiteral("orm"));
@@ -356,10 +358,13 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
 
 // --mesh, --size and the camera and light options (over the preset's view).
 std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& request) {
-  const QString meshName = parser.isSet(QStringLiteral("mesh")) || request.presetView.mesh.empty()
-                               ? parser.value(QStringLiteral("mesh"))
-                               : QString::fromStdString(request.presetView.mesh);
-  if (auto exit = resolveMesh(meshName, request.mesh))
+  const bool meshFromPreset =
+      !parser.isSet(QStringLiteral("mesh")) && !request.presetView.mesh.empty();
+  const QString meshName = meshFromPreset ? QString::fromStdString(request.presetView.mesh)
+                                          : parser.value(QStringLiteral("mesh"));
+  const QString meshNamedBy =
+      meshFromPreset ? request.presetPath + QStringLiteral(": view.mesh") : QString();
+  if (auto exit = resolveMesh(meshName, request.mesh, meshNamedBy))
     return *exit;
   static const QRegularExpression sizePattern(QStringLiteral("^(\\d{1,5})x(\\d{1,5})$"));
   const QRegularExpressionMatch size = sizePattern.match(parser.value(QStringLiteral("size")));
@@ -374,7 +379,8 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
   core::DirectionalLight& light = request.frame.view.light;
   if (request.presetView.camera)
     camera = *request.presetView.camera;
-  if (auto exit = applyLightingOptions(parser, request.presetView, request.frame.view))
+  if (auto exit =
+          applyLightingOptions(parser, request.presetView, request.presetPath, request.frame.view))
     return exit;
   const auto yaw = numberOption(parser, QStringLiteral("yaw"), camera.yawDeg);
   const auto pitch = numberOption(parser, QStringLiteral("pitch"), camera.pitchDeg);

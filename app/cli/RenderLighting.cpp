@@ -34,10 +34,13 @@ std::optional<int> applyDisplay(const QCommandLineParser& parser, core::DisplayT
   return std::nullopt;
 }
 
-std::optional<int> applyEnvironment(const QCommandLineParser& parser,
+std::optional<int> applyEnvironment(const QCommandLineParser& parser, const QString& presetPath,
                                     core::Environment& environment) {
+  QString namedBy;  // where the source came from, when not from --environment
   if (parser.isSet(QStringLiteral("environment")))
     environment.source = parser.value(QStringLiteral("environment")).toStdString();
+  else if (!presetPath.isEmpty())
+    namedBy = presetPath + QStringLiteral(": view.environment.source");
   const auto intensity =
       numberOption(parser, QStringLiteral("environment-intensity"), environment.intensity);
   const auto rotation =
@@ -63,7 +66,7 @@ std::optional<int> applyEnvironment(const QCommandLineParser& parser,
   }
   // Read now: a missing or bad file is the command's error, not a silent uniform fallback.
   if (const auto radiance = core::environmentRadiance(environment.source); !radiance) {
-    printError(QString::fromStdString(radiance.error()));
+    printError(prefixedBy(namedBy, radiance.error()));
     return kExitFailure;
   }
   return std::nullopt;
@@ -114,7 +117,7 @@ CliOptions lightingOptions() {
 
 std::optional<int> applyLightingOptions(const QCommandLineParser& parser,
                                         const core::ViewState& presetView,
-                                        renderer::RenderView& view) {
+                                        const QString& presetPath, renderer::RenderView& view) {
   if (presetView.light)
     view.light = *presetView.light;
   if (presetView.display)
@@ -132,7 +135,8 @@ std::optional<int> applyLightingOptions(const QCommandLineParser& parser,
   view.light.intensity = float(*intensity);
   if (auto exit = applyDisplay(parser, view.display))
     return exit;
-  return applyEnvironment(parser, view.environment);
+  return applyEnvironment(parser, presetView.environment ? presetPath : QString(),
+                          view.environment);
 }
 
 }  // namespace relief::cli

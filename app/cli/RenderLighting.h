@@ -14,10 +14,10 @@ CliOptions lightingOptions();
 
 // Sets `view`'s light intensity, environment and display from the preset's `presetView` and
 // the options. An environment file is read and checked here, so a bad one stops the command
-// (exit 1) with a message naming it instead of rendering with the fallback. Returns an exit
-// code on error.
+// (exit 1) with a message naming it (and `presetPath` with the field, when the preset named it)
+// instead of rendering with the fallback. Returns an exit code on error.
 std::optional<int> applyLightingOptions(const QCommandLineParser& parser,
                                         const core::ViewState& presetView,
-                                        renderer::RenderView& view);
+                                        const QString& presetPath, renderer::RenderView& view);
 
 }  // namespace relief::cli

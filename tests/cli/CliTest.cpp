@@ -1251,6 +1251,54 @@ TEST(Cli, PresetsThatAreNotFilesOrAreHugeAreRefusedAtOnce) {
                      future, "version 9223372036854775808");
 }
 
+// A bad file a preset points at is named with the preset and the field that named it, so the
+// user knows which preset to fix and where: "m.relief: view.mesh: …/adir.obj: a folder, …".
+TEST(Cli, FilesAPresetNamesAreReportedWithThePresetAndTheField) {
+  const std::string folder = scratchFolder() + "/preset-names";
+  std::filesystem::create_directories(folder + "/adir.obj");
+  std::filesystem::create_directories(folder + "/adir.exr");
+  std::filesystem::create_directories(folder + "/adir.png");
+  const std::string preset = folder + "/m.relief";
+  const auto expectNamed = [&](const CliRun& run, const std::string& field,
+                               const std::string& file) {
+    EXPECT_FALSE(run.crashed);
+    EXPECT_NE(run.exitCode, 0) << run.err;
+    const std::string said = preset + ": " + field;
+    EXPECT_NE(run.err.find(said), std::string::npos) << "expected '" << said << "' in: " << run.err;
+    EXPECT_NE(run.err.find(file + ": a folder, not a regular file"), std::string::npos) << run.err;
+  };
+
+  writeBytes(preset,
+             R"({"format": "relief-material", "version": 2, "view": {"mesh": "adir.obj"}})");
+  const QString out = q(folder + "/out.png");
+  expectNamed(runCli({QStringLiteral("render"), q(preset), QStringLiteral("--size"),
+                      QStringLiteral("16x16"), QStringLiteral("--out"), out}),
+              "view.mesh", "adir.obj");
+  expectNamed(runCli({QStringLiteral("export"), QStringLiteral("--preset"), q(preset),
+                      QStringLiteral("--to"), QStringLiteral("gltf"), QStringLiteral("--out"),
+                      q(folder + "/export/")}),
+              "view.mesh", "adir.obj");
+  // --mesh given on the command line: the file alone, as the user typed it.
+  const CliRun typed = runCli({QStringLiteral("render"), q(preset), QStringLiteral("--mesh"),
+                               q(folder + "/adir.obj"), QStringLiteral("--size"),
+                               QStringLiteral("16x16"), QStringLiteral("--out"), out});
+  EXPECT_NE(typed.exitCode, 0);
+  EXPECT_EQ(typed.err.find("view.mesh"), std::string::npos) << typed.err;
+
+  writeBytes(preset, R"({"format": "relief-material", "version": 2,
+                         "view": {"environment": {"source": "adir.exr"}}})");
+  expectNamed(runCli({QStringLiteral("render"), q(preset), QStringLiteral("--size"),
+                      QStringLiteral("16x16"), QStringLiteral("--out"), out}),
+              "view.environment.source", "adir.exr");
+
+  // Maps were already named by their slot: "m.relief: height map not loaded: …".
+  writeBytes(
+      preset,
+      R"({"format": "relief-material", "version": 2, "maps": {"height": {"path": "adir.png"}}})");
+  expectNamed(runCli({QStringLiteral("preset"), QStringLiteral("validate"), q(preset)}),
+              "height map not loaded", "adir.png");
+}
+
 TEST(Cli, HostileMeshesAreRefusedBeforeAssimpReadsThem) {
   const std::string folder = scratchFolder() + "/hostile-meshes";
   std::filesystem::create_directories(folder);
