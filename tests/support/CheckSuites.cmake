@@ -1,0 +1,25 @@
+# Checks that the GoogleTest suites a test binary holds are those CTest runs (the SUITES that
+# relief_add_test read from the sources, in tests/CMakeLists.txt): a suite whose TEST line the
+# reading missed would otherwise never run. cmake -DBINARY=<test binary> -DSUITES=<a;b;c> -P
+execute_process(COMMAND ${BINARY} --gtest_list_tests OUTPUT_VARIABLE listing RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "${BINARY} --gtest_list_tests failed (${status})")
+endif()
+string(REPLACE "\n" ";" lines "${listing}")
+set(held "")
+foreach(line IN LISTS lines)
+  if(line MATCHES "^([A-Za-z0-9_]+)\\.")
+    list(APPEND held ${CMAKE_MATCH_1})
+  endif()
+endforeach()
+list(REMOVE_DUPLICATES held)
+set(missing ${held})
+list(REMOVE_ITEM missing ${SUITES})
+set(empty ${SUITES})
+list(REMOVE_ITEM empty ${held})
+if(missing OR empty)
+  message(FATAL_ERROR "suites CTest does not run: [${missing}]; suites CTest runs that hold no "
+                      "case: [${empty}]")
+endif()
+list(LENGTH held count)
+message(STATUS "${count} suites, each a CTest test")
