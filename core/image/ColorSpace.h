@@ -13,6 +13,13 @@ constexpr std::string_view colorSpaceName(ColorSpace space) {
   return space == ColorSpace::Srgb ? "srgb" : "linear";
 }
 
+// The colour space of an OpenImageIO "oiio:ColorSpace" name, as image files carry it (PNG text,
+// or what a reader derives from the file): sRGB and gamma curves ("Gamma2.2") are sRGB-encoded
+// colour, anything else ("linear", "Linear", a float file's scene-linear) is linear data.
+constexpr ColorSpace colorSpaceFromOiioName(std::string_view name) {
+  return (name == "sRGB" || name.substr(0, 5) == "Gamma") ? ColorSpace::Srgb : ColorSpace::Linear;
+}
+
 inline float srgbToLinear(float encoded) {
   return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }

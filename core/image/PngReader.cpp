@@ -2,6 +2,8 @@
 // (ISO/IEC 15948, third edition) defines them; whole-buffer inflate by libdeflate.
 #include "core/image/PngReader.h"
 
+#include "core/image/PngFormat.h"
+
 #include <libdeflate.h>
 
 #include <algorithm>
@@ -15,46 +17,16 @@
 namespace relief::core::inline image {
 namespace {
 
-constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-
-std::uint32_t bigEndian32(const std::uint8_t* bytes) {
-  return std::uint32_t(bytes[0]) << 24 | std::uint32_t(bytes[1]) << 16 |
-         std::uint32_t(bytes[2]) << 8 | std::uint32_t(bytes[3]);
-}
+using png::allowedDepth;
+using png::bigEndian32;
+using png::kSignature;
+using png::storedSamplesOf;
+using png::unfilterRow;
 
 struct Header {
   std::uint32_t width = 0, height = 0;
   int bitDepth = 0, colourType = 0, interlace = 0;
 };
-
-// Samples per pixel as stored (PNG section 6.1), 0 for reserved types.
-int storedSamplesOf(int colourType) {
-  switch (colourType) {
-    case 0:
-      return 1;  // grey
-    case 3:
-      return 1;  // palette index
-    case 4:
-      return 2;  // grey and alpha
-    case 2:
-      return 3;  // RGB
-    case 6:
-      return 4;  // RGBA
-    default:
-      return 0;
-  }
-}
-
-bool allowedDepth(int colourType, int bitDepth) {
-  switch (colourType) {
-    case 0:
-      return bitDepth == 1 || bitDepth == 2 || bitDepth == 4 || bitDepth == 8 || bitDepth == 16;
-    case 3:
-      return bitDepth == 1 || bitDepth == 2 || bitDepth == 4 || bitDepth == 8;
-    default:
-      return bitDepth == 8 || bitDepth == 16;
-  }
-}
 
 // The palette and its alphas (PLTE, tRNS), as 8-bit RGBA entries.
 struct Palette {
@@ -62,46 +34,6 @@ struct Palette {
   bool hasAlpha = false;
   std::uint8_t rgba[256][4] = {};
 };
-
-// Undoes one row's filter in place (PNG section 9.2). `above` is the previous unfiltered row, or
-// null for the first row, whose "above" bytes are zero.
-bool unfilterRow(std::uint8_t filter, std::uint8_t* row, const std::uint8_t* above,
-                 std::size_t rowBytes, std::size_t bytesPerPixel) {
-  switch (filter) {
-    case 0:  // None
-      return true;
-    case 1:  // Sub
-      for (std::size_t i = bytesPerPixel; i < rowBytes; ++i)
-        row[i] = std::uint8_t(row[i] + row[i - bytesPerPixel]);
-      return true;
-    case 2:  // Up
-      if (above) {
-        for (std::size_t i = 0; i < rowBytes; ++i)
-          row[i] = std::uint8_t(row[i] + above[i]);
-      }
-      return true;
-    case 3:  // Average
-      for (std::size_t i = 0; i < rowBytes; ++i) {
-        const int left = i >= bytesPerPixel ? row[i - bytesPerPixel] : 0;
-        const int up = above ? above[i] : 0;
-        row[i] = std::uint8_t(row[i] + ((left + up) >> 1));
-      }
-      return true;
-    case 4:  // Paeth
-      for (std::size_t i = 0; i < rowBytes; ++i) {
-        const bool hasLeft = i >= bytesPerPixel;
-        const int a = hasLeft ? row[i - bytesPerPixel] : 0;
-        const int b = above ? above[i] : 0;
-        const int c = (hasLeft && above) ? above[i - bytesPerPixel] : 0;
-        const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
-        const int predictor = (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
-        row[i] = std::uint8_t(row[i] + predictor);
-      }
-      return true;
-    default:
-      return false;
-  }
-}
 
 Error damaged(const std::string& path, const std::string& what) {
   return makeError(path + ": the pixel data is damaged or truncated (" + what + ")");

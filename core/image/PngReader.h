@@ -7,7 +7,7 @@
 // no second copy of the pixels is held, and takes about 150 ms (tools/bench-cli).
 // It also refuses a palette index past the palette's end, which libpng silently reads as black.
 // Interlaced files and the colour-key transparency of grey and RGB images are left to
-// OpenImageIO, which remains the reader of record for the header and colour space.
+// OpenImageIO (its module, OiioModule.h); the header and colour space are PngPreflight's.
 #pragma once
 
 #include "core/base/Result.h"

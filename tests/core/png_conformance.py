@@ -102,6 +102,28 @@ chunks.add(b"sRGB", b"\x00")
 save("rgb8-srgb", rgba().convert("RGB"), 3, pnginfo=chunks)
 profile = ImageCms.ImageCmsProfile(ImageCms.createProfile("sRGB")).tobytes()
 save("rgb8-iccp", rgba().convert("RGB"), 3, icc_profile=profile)
+# The chunks that make a map linear data: a gAMA of 1.0, or OpenImageIO's "oiio:ColorSpace"
+# text in a tEXt, zTXt (compressed) or iTXt chunk (tests/core/PngConformanceTest.cpp compares
+# the colour space Relief reads with OpenImageIO's reading of the same file).
+chunks = PngImagePlugin.PngInfo()
+chunks.add(b"gAMA", (100000).to_bytes(4, "big"))
+save("grey8-gama1", grey(256), 1, pnginfo=chunks)
+chunks = PngImagePlugin.PngInfo()
+chunks.add(b"gAMA", (99800).to_bytes(4, "big"))
+save("grey8-gama-near1", grey(256), 1, pnginfo=chunks)
+chunks = PngImagePlugin.PngInfo()
+chunks.add_text("oiio:ColorSpace", "Linear")
+save("grey8-text-linear", grey(256), 1, pnginfo=chunks)
+chunks = PngImagePlugin.PngInfo()
+chunks.add_text("oiio:ColorSpace", "Linear", zip=True)
+save("grey8-ztxt-linear", grey(256), 1, pnginfo=chunks)
+chunks = PngImagePlugin.PngInfo()
+chunks.add_itxt("oiio:ColorSpace", "linear", lang="en", tkey="", zip=False)
+save("grey8-itxt-linear", grey(256), 1, pnginfo=chunks)
+chunks = PngImagePlugin.PngInfo()
+chunks.add(b"gAMA", (100000).to_bytes(4, "big"))
+chunks.add_text("oiio:ColorSpace", "sRGB")
+save("grey8-gama1-text-srgb", grey(256), 1, pnginfo=chunks)
 
 
 # Damaged files, each to be refused with a message: printed as "NAME broken WHAT".
