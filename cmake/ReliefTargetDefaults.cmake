@@ -16,6 +16,15 @@ elseif(RELIEF_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
+# Where the modules (core/CMakeLists.txt) are built and installed; executables find them through
+# their run path: the build folder in a build, $ORIGIN/<bin to module folder> once installed.
+include(GNUInstallDirs)
+set(RELIEF_MODULE_BUILD_DIR ${PROJECT_BINARY_DIR}/modules)
+set(RELIEF_MODULE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/relief)
+file(RELATIVE_PATH RELIEF_MODULE_INSTALL_RPATH ${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}
+     ${CMAKE_INSTALL_PREFIX}/${RELIEF_MODULE_INSTALL_DIR})
+set(RELIEF_MODULE_INSTALL_RPATH "$ORIGIN/${RELIEF_MODULE_INSTALL_RPATH}")
+
 function(relief_target_defaults target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wshadow -Wnon-virtual-dtor
                                            -Woverloaded-virtual)
@@ -27,6 +36,9 @@ function(relief_target_defaults target)
   # Every sanitized executable carries the runtime's defaults (why: SanitizerDefaults.cpp) and
   # counts its heap's peak when asked to (HeapPeak.cpp; tests/cli/LargeMapTest.cpp reads it).
   get_target_property(type ${target} TYPE)
+  if(type STREQUAL "EXECUTABLE")
+    set_property(TARGET ${target} APPEND PROPERTY BUILD_RPATH ${RELIEF_MODULE_BUILD_DIR})
+  endif()
   if((RELIEF_SANITIZE OR RELIEF_FUZZ) AND type STREQUAL "EXECUTABLE")
     target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tools/sanitizers/SanitizerDefaults.cpp
                                      ${PROJECT_SOURCE_DIR}/tools/sanitizers/HeapPeak.cpp)

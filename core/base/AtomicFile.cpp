@@ -1,6 +1,8 @@
 // AtomicFile; see AtomicFile.h.
 #include "core/base/AtomicFile.h"
 
+#include "core/base/TemporaryFiles.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -30,6 +32,7 @@ Status failure(const std::string& path, const std::string& what, int error) {
 Status writeFileAtomically(const std::string& path, std::string_view bytes) {
   const std::filesystem::path target = std::filesystem::absolute(path);
   const std::string temporary = temporaryPathFor(target);
+  const TemporaryFile removedIfInterrupted(temporary);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0)
     return failure(path, "creating a temporary file", errno);

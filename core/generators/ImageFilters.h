@@ -32,7 +32,11 @@ Image gaussianBlur(const Image& image, double sigma, EdgeMode edge,
 // Rec. 709 luminance of linear RGB (sRGB images are decoded first); grey images pass through.
 Image luminance(const Image& image);
 
-// Resized with OpenImageIO's ImageBufAlgo::resize (a good filter for both directions).
+// Resized with a separable Lanczos-3 filter, widened by the scale when shrinking (so every source
+// texel contributes: no aliasing), clamped at the edges, multi-threaded. The same filter as
+// OpenImageIO's ImageBufAlgo::resize uses when shrinking, written here so that generating and
+// exporting maps never load OpenImageIO (its 260 shared libraries take longer than the resize:
+// docs/architecture.md, "Start-up").
 Image resizeImage(const Image& image, int width, int height);
 
 }  // namespace relief::core::inline generators

@@ -1,6 +1,6 @@
-// The image file types Relief reads and writes (through OpenImageIO), declared once: the map
-// loaders' file filters and drop checks, the CLI's output checks and the sample format a save
-// picks all read this table.
+// The image file types Relief reads and writes (PNG itself, the rest through OpenImageIO), declared
+// once: the map loaders' file filters and drop checks, the CLI's output checks and the sample
+// format a save picks all read this table.
 #pragma once
 
 #include <span>

@@ -1,67 +1,51 @@
-// OpenImageIO-backed image files; see ImageIO.h.
+// Image files; see ImageIO.h. PNG is read and written by Relief's own code (PngPreflight,
+// PngReader, PngVerify, PngWriter); every other type, and the PNG features PngReader leaves,
+// through OpenImageIO in its module (OiioModule.h), loaded the first time a file needs it.
 #include "core/image/ImageIO.h"
 
 #include "core/base/InputFile.h"
+#include "core/base/TemporaryFiles.h"
 #include "core/base/Text.h"
-#include "core/base/ThirdPartyAllocationScope.h"
 #include "core/image/ExrPreflight.h"
 #include "core/image/ImageFileTypes.h"
+#include "core/image/OiioModule.h"
 #include "core/image/PngPreflight.h"
 #include "core/image/PngReader.h"
+#include "core/image/PngVerify.h"
 #include "core/image/PngWriter.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <system_error>
-#include <vector>
 
 namespace relief::core::inline image {
 namespace {
 
 namespace fs = std::filesystem;
 
-// OpenImageIO's messages often repeat the path and end with newlines; keep them readable.
-std::string cleanOiioMessage(std::string message) {
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
-    message.pop_back();
+Status validateSize(const std::string& path, std::int64_t width, std::int64_t height, int depth,
+                    int channels) {
+  if (width <= 0 || height <= 0) {
+    return makeError(path + ": the header gives an empty size (" + std::to_string(width) + "x" +
+                     std::to_string(height) + ")");
   }
-  std::replace(message.begin(), message.end(), '\n', ' ');
-  return message.empty() ? std::string("unknown error") : message;
-}
-
-ColorSpace colorSpaceOf(const OIIO::ImageSpec& spec) {
-  if (spec.format.is_floating_point()) {
-    return ColorSpace::Linear;
-  }
-  const std::string tag = spec.get_string_attribute("oiio:ColorSpace");
-  return (tag == "sRGB" || tag.rfind("Gamma", 0) == 0) ? ColorSpace::Srgb : ColorSpace::Linear;
-}
-
-Status validateSpec(const std::string& path, const OIIO::ImageSpec& spec) {
-  if (spec.width <= 0 || spec.height <= 0) {
-    return makeError(path + ": the header gives an empty size (" + std::to_string(spec.width) +
-                     "x" + std::to_string(spec.height) + ")");
-  }
-  if (spec.width > kMaxImageDimension || spec.height > kMaxImageDimension) {
-    return makeError(path + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+  if (width > kMaxImageDimension || height > kMaxImageDimension) {
+    return makeError(path + ": " + std::to_string(width) + "x" + std::to_string(height) +
                      " exceeds the limit of " + std::to_string(kMaxImageDimension) + "x" +
                      std::to_string(kMaxImageDimension) + " texels");
   }
-  if (spec.depth > 1) {
+  if (depth > 1) {
     return makeError(path + ": volume images are not supported");
   }
-  if (spec.nchannels < 1) {
+  if (channels < 1) {
     return makeError(path + ": the image has no channels");
   }
-  if (spec.nchannels > kMaxImageChannels) {
-    return makeError(path + ": " + std::to_string(spec.nchannels) + " channels (the limit is " +
+  if (channels > kMaxImageChannels) {
+    return makeError(path + ": " + std::to_string(channels) + " channels (the limit is " +
                      std::to_string(kMaxImageChannels) + ")");
   }
   return {};
@@ -69,11 +53,10 @@ Status validateSpec(const std::string& path, const OIIO::ImageSpec& spec) {
 
 // What a file's first bytes say it is. DDS and KTX2 are Relief's own readers' business
 // (core/compression/MapFile.h): OpenImageIO's DDS reader spins forever on uncompressed DDS and
-// accepts truncated files, so a DDS renamed to .png is caught here too. For images, the
-// OpenImageIO reader named by the signature, or by the extension for formats without one
-// (TGA): OpenImageIO's own open() tries every reader it has when the first fails, which took
-// up to 13 s on a damaged PNG under the fuzzer and then reported that no reader was found
-// instead of what was wrong with the PNG.
+// accepts truncated files, so a DDS renamed to .png is caught here too. For images, the reader
+// named by the signature, or by the extension for formats without one (TGA): OpenImageIO's own
+// open() tries every reader it has when the first fails, which took up to 13 s on a damaged PNG
+// under the fuzzer and then reported that no reader was found instead of what was wrong.
 struct Sniffed {
   bool textureContainer = false;
   std::string reader;  // an OpenImageIO format name or extension
@@ -103,9 +86,16 @@ Sniffed sniff(const std::string& path) {
   return {false, lowerExtension(path)};
 }
 
-Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
-  // OpenImageIO reports a missing file, a folder or an empty file vaguely, and would block on
-  // a FIFO: the input policy comes first.
+// An image file that passed the input policy and the checks of its header that come before
+// any library reads it. PNGs carry the header Relief read.
+struct CheckedFile {
+  std::string reader;
+  std::optional<PngHeader> png;
+};
+
+Result<CheckedFile> checkImageFile(const std::string& path) {
+  // Libraries report a missing file, a folder or an empty file vaguely, and would block on a
+  // FIFO: the input policy comes first.
   const Result<std::uintmax_t> readable = checkInputFile(path, kMaxImageFileBytes, "image file");
   if (!readable) {
     return makeError(readable.error());
@@ -116,100 +106,96 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
                      ": a compressed texture (DDS or KTX2), not an image file; it is read "
                      "by Relief's texture reader (relief-cli decode, or as a map)");
   }
+  CheckedFile checked{sniffed.reader, std::nullopt};
   // Header checks before a library allocates what a damaged header claims.
   if (sniffed.reader == "openexr") {
     if (Status header = preflightExr(path, readable.value()); !header)
       return makeError(header.error());
   }
   if (sniffed.reader == "png") {
-    if (Status chunks = preflightPng(path, readable.value()); !chunks)
-      return makeError(chunks.error());
+    Result<PngHeader> header = preflightPng(path, readable.value());
+    if (!header)
+      return makeError(header.error());
+    if (Status size = validateSize(path, header->width, header->height, 1, header->channels());
+        !size)
+      return makeError(size.error());
+    checked.png = header.value();
   }
-  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(sniffed.reader);
-  if (!input) {
-    return makeError(path + ": not an image file Relief reads (" +
-                     cleanOiioMessage(OIIO::geterror()) + ")");
-  }
-  bool opened = false;
-  {
-    const ThirdPartyAllocationScope oiioMayLeakOnDamagedHeaders;
-    // Maps keep their alpha as stored: it is data (a packed height, a mask), not coverage to
-    // premultiply by, and PNG stores it straight. Without this hint OpenImageIO multiplies the
-    // colour of PNG, TGA and unassociated-alpha TIFF files by their alpha on reading.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    OIIO::ImageSpec spec;
-    opened = input->open(path, spec, config);
-  }
-  if (!opened) {
-    return makeError(path + ": cannot read as an image (" + cleanOiioMessage(input->geterror()) +
-                     ")");
-  }
-  if (Status valid = validateSpec(path, input->spec()); !valid) {
+  return checked;
+}
+
+Result<std::unique_ptr<OiioInput>> openWithOpenImageIO(const std::string& path,
+                                                       const std::string& reader) {
+  const Result<OiioModule*> module = oiioModule(path + ": reading this file type");
+  if (!module)
+    return makeError(module.error());
+  Result<std::unique_ptr<OiioInput>> input = module.value()->open(path, reader);
+  if (!input)
+    return input;
+  const OiioHeader& header = input.value()->header();
+  if (Status valid = validateSize(path, header.width, header.height, header.depth, header.channels);
+      !valid) {
     return makeError(valid.error());
   }
   return input;
 }
 
-// Runs one pixel read and turns a failure, or a failure reported late on close (a CRC error in
-// the last chunk), into a message naming the file.
-template <class Read>
-Status readPixels(OIIO::ImageInput& input, const std::string& path, Read read, bool closeAfter) {
-  bool ok = false;
-  {
-    const ThirdPartyAllocationScope oiioMayLeakOnDamagedFiles;
-    ok = read();
-  }
-  if (ok && closeAfter)
-    ok = input.close() && !input.has_error();
-  if (!ok) {
-    return makeError(path + ": the pixel data is damaged or truncated (" +
-                     cleanOiioMessage(input.geterror()) + ")");
-  }
-  return {};
+ColorSpace colorSpaceOf(const OiioHeader& header) {
+  return header.isFloat ? ColorSpace::Linear : colorSpaceFromOiioName(header.colorSpaceName);
 }
 
-OIIO::TypeDesc chooseFileType(const Image& image, const std::string& path, SampleFormat format) {
+OiioSampleType chooseSampleType(const Image& image, const std::string& path, SampleFormat format) {
   const ImageFileType* type = imageFileTypeForPath(path);
   const bool isExr = type && type->isFloat;
   const bool supports16 = type && type->maxBitsPerChannel == 16;
   switch (format) {
     case SampleFormat::UInt8:
-      return OIIO::TypeDesc::UINT8;
+      return OiioSampleType::UInt8;
     case SampleFormat::UInt16:
-      return OIIO::TypeDesc::UINT16;
+      return OiioSampleType::UInt16;
     case SampleFormat::Half:
-      return OIIO::TypeDesc::HALF;
+      return OiioSampleType::Half;
     case SampleFormat::Float:
-      return OIIO::TypeDesc::FLOAT;
+      return OiioSampleType::Float;
     case SampleFormat::Auto:
       break;
   }
   if (isExr) {
-    return image.sourceBitsPerChannel() == 32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
+    return image.sourceBitsPerChannel() == 32 ? OiioSampleType::Float : OiioSampleType::Half;
   }
   if (supports16 && image.sourceBitsPerChannel() > 8) {
-    return OIIO::TypeDesc::UINT16;
+    return OiioSampleType::UInt16;
   }
-  return OIIO::TypeDesc::UINT8;
+  return OiioSampleType::UInt8;
 }
 
 }  // namespace
 
 Result<ImageFileInfo> readImageInfo(const std::string& path) {
-  auto input = openInput(path);
-  if (!input) {
-    return makeError(input.error());
-  }
-  const OIIO::ImageSpec& spec = input.value()->spec();
+  const Result<CheckedFile> checked = checkImageFile(path);
+  if (!checked)
+    return makeError(checked.error());
   ImageFileInfo info;
-  info.width = spec.width;
-  info.height = spec.height;
-  info.channels = spec.nchannels;
-  info.bitsPerChannel = spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8));
-  info.isFloat = spec.format.is_floating_point();
-  info.formatName = input.value()->format_name();
-  info.colorSpace = colorSpaceOf(spec);
+  if (const std::optional<PngHeader>& png = checked->png) {
+    info.width = int(png->width);
+    info.height = int(png->height);
+    info.channels = png->channels();
+    info.bitsPerChannel = png->bitsPerChannel();
+    info.formatName = "png";
+    info.colorSpace = png->colorSpace;
+    return info;
+  }
+  const auto input = openWithOpenImageIO(path, checked->reader);
+  if (!input)
+    return makeError(input.error());
+  const OiioHeader& header = input.value()->header();
+  info.width = header.width;
+  info.height = header.height;
+  info.channels = header.channels;
+  info.bitsPerChannel = header.bitsPerSample;
+  info.isFloat = header.isFloat;
+  info.formatName = header.formatName;
+  info.colorSpace = colorSpaceOf(header);
   return info;
 }
 
@@ -223,66 +209,40 @@ SampleFormat fullPrecisionFormatFor(const std::string& path) {
 }
 
 Status verifyImageData(const std::string& path) {
-  auto opened = openInput(path);
-  if (!opened)
-    return makeError(opened.error());
-  OIIO::ImageInput& input = *opened.value();
-  const OIIO::ImageSpec& spec = input.spec();
-  // Tiled files (VFX pipelines' TIFFs and mip-mapped EXRs) are read a row of tiles at a time:
-  // OpenImageIO 2.4's read_scanlines divides by zero on them (SIGFPE). Strips stay aligned to
-  // the tile height; the last one ends at the image's edge.
-  const bool tiled = spec.tile_width > 0 && spec.tile_height > 0;
-  const int stripRows = tiled ? spec.tile_height * std::max(1, 64 / spec.tile_height) : 64;
-  const int stripWidth =
-      tiled ? (spec.width + spec.tile_width - 1) / spec.tile_width * spec.tile_width : spec.width;
-  std::vector<float> strip(std::size_t(stripWidth) * std::size_t(spec.nchannels) *
-                           std::size_t(stripRows));
-  const int lastRow = spec.y + spec.height;
-  for (int y = spec.y; y < lastRow; y += stripRows) {
-    const int end = std::min(y + stripRows, lastRow);
-    const auto readStrip = [&] {
-      if (tiled) {
-        return input.read_tiles(0, 0, spec.x, spec.x + spec.width, y, end, spec.z,
-                                spec.z + std::max(1, spec.depth), 0, spec.nchannels,
-                                OIIO::TypeDesc::FLOAT, strip.data());
-      }
-      return input.read_scanlines(0, 0, y, end, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
-                                  strip.data());
-    };
-    if (Status status = readPixels(input, path, readStrip, end == lastRow); !status) {
-      return status;
-    }
-  }
-  return {};
+  const Result<CheckedFile> checked = checkImageFile(path);
+  if (!checked)
+    return makeError(checked.error());
+  if (checked->png)
+    return verifyPngData(path, *checked->png);
+  const auto input = openWithOpenImageIO(path, checked->reader);
+  if (!input)
+    return makeError(input.error());
+  return input.value()->verify();
 }
 
 Result<Image> loadImage(const std::string& path) {
-  auto opened = openInput(path);
-  if (!opened) {
-    return makeError(opened.error());
-  }
-  OIIO::ImageInput& input = *opened.value();
-  const OIIO::ImageSpec& spec = input.spec();
-  const int channels = std::min(spec.nchannels, 4);
-
-  Image image(spec.width, spec.height, channels, colorSpaceOf(spec));
-  image.setSourceBitsPerChannel(
-      spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8)));
-  if (std::string_view(input.format_name()) == "png" && channels == spec.nchannels) {
-    // OpenImageIO has read the header and colour space; the pixels of common PNGs decode
-    // faster in Relief's own reader (PngReader.h), which hands the rest back.
-    const Result<PngFastDecode> fast = decodePngPixels(path, image);
-    if (!fast)
-      return makeError(fast.error());
-    if (fast.value() == PngFastDecode::Decoded)
+  const Result<CheckedFile> checked = checkImageFile(path);
+  if (!checked)
+    return makeError(checked.error());
+  if (const std::optional<PngHeader>& png = checked->png) {
+    Image image(int(png->width), int(png->height), png->channels(), png->colorSpace);
+    image.setSourceBitsPerChannel(png->bitsPerChannel());
+    const Result<PngFastDecode> decoded = decodePngPixels(path, image);
+    if (!decoded)
+      return makeError(decoded.error());
+    if (decoded.value() == PngFastDecode::Decoded)
       return image;
   }
-  const auto readAll = [&] {
-    return input.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.data());
-  };
-  if (Status status = readPixels(input, path, readAll, true); !status) {
+  const auto opened = openWithOpenImageIO(path, checked->reader);
+  if (!opened)
+    return makeError(opened.error());
+  OiioInput& input = *opened.value();
+  const OiioHeader& header = input.header();
+  const int channels = std::min(header.channels, 4);
+  Image image(header.width, header.height, channels, colorSpaceOf(header));
+  image.setSourceBitsPerChannel(header.bitsPerSample);
+  if (Status status = input.readImage(channels, image.data()); !status)
     return makeError(status.error());
-  }
   return image;
 }
 
@@ -290,30 +250,23 @@ namespace {
 
 // Every type but PNG goes through OpenImageIO, into `temporary`.
 Status writeWithOpenImageIO(const Image& image, const std::string& path,
-                            const std::string& temporary, OIIO::TypeDesc sampleType) {
-  auto output = OIIO::ImageOutput::create(path);
-  if (!output) {
-    return makeError(path + ": cannot write this file type (" + cleanOiioMessage(OIIO::geterror()) +
-                     ")");
-  }
-  OIIO::ImageSpec spec(image.width(), image.height(), image.channels(), sampleType);
-  // Tag linear data (normals, heights) as such, so readers do not treat it as sRGB colour.
-  spec.attribute("oiio:ColorSpace", image.colorSpace() == ColorSpace::Srgb ? "sRGB" : "Linear");
-  // Alpha is data and is written as it is (OpenImageIO would otherwise divide the colour by it
-  // for formats that store straight alpha, losing whatever exceeds the alpha).
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (const ImageFileType* type = imageFileTypeForPath(path); type && type->isFloat) {
-    spec.attribute("compression", "zip");
-  }
-  // Quantising finer data to 8 bits bands smooth gradients; OpenImageIO's dither adds noise of
-  // under half a level first. Images that came from 8-bit files stay exact.
-  if (spec.format == OIIO::TypeDesc::UINT8 && image.sourceBitsPerChannel() != 8) {
-    spec.attribute("oiio:dither", 1);
-  }
-  const bool written = output->open(temporary, spec) &&
-                       output->write_image(OIIO::TypeDesc::FLOAT, image.data()) && output->close();
-  if (!written)
-    return makeError(path + ": cannot write (" + cleanOiioMessage(output->geterror()) + ")");
+                            const std::string& temporary, OiioSampleType sampleType) {
+  const Result<OiioModule*> module = oiioModule(path + ": writing this file type");
+  if (!module)
+    return makeError(module.error());
+  OiioWriteRequest request;
+  request.pixels = image.data();
+  request.width = image.width();
+  request.height = image.height();
+  request.channels = image.channels();
+  request.sampleType = sampleType;
+  request.srgb = image.colorSpace() == ColorSpace::Srgb;
+  const ImageFileType* type = imageFileTypeForPath(path);
+  request.zip = type && type->isFloat;
+  // Images that came from 8-bit files stay exact; finer data is dithered to 8 bits.
+  request.dither = sampleType == OiioSampleType::UInt8 && image.sourceBitsPerChannel() != 8;
+  if (Status written = module.value()->write(path, temporary, request); !written)
+    return written;
   // Some of OpenImageIO's writers report success after a short write, on a full disk or past a
   // file-size limit. Decoding the file before it replaces the old one catches that.
   if (Status intact = verifyImageData(temporary); !intact) {
@@ -330,7 +283,7 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
   if (image.isEmpty()) {
     return makeError(path + ": nothing to save (the image is empty)");
   }
-  const OIIO::TypeDesc sampleType = chooseFileType(image, path, format);
+  const OiioSampleType sampleType = chooseSampleType(image, path, format);
   const ImageFileType* type = imageFileTypeForPath(path);
   // The temporary keeps the extension so that OpenImageIO's writer sees the same format.
   const fs::path target(path);
@@ -343,13 +296,14 @@ Status saveImage(const Image& image, const std::string& path, SampleFormat forma
   }
   // Past a file-size limit (ulimit -f) the kernel sends SIGXFSZ, which would kill the process
   // and leave the temporary file; ignored, the write fails instead and is cleaned up below.
+  const TemporaryFile removedIfInterrupted(temporary.string());
   const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
   Status written;
   if (type && type->extension == "png") {
     // PNG: our writer (PngWriter.h: twenty times faster, and it checks its own writes, so the
     // file needs no second decoding). PNG holds 8 or 16 bits; float requests get 16.
     PngWriteOptions options;
-    options.bitsPerChannel = sampleType == OIIO::TypeDesc::UINT8 ? 8 : 16;
+    options.bitsPerChannel = sampleType == OiioSampleType::UInt8 ? 8 : 16;
     options.dither = options.bitsPerChannel == 8 && image.sourceBitsPerChannel() != 8;
     written = writePng(image, temporary.string(), options);
     if (!written) {

@@ -1,6 +1,7 @@
-// Loading and saving Images through OpenImageIO: PNG (8/16-bit), JPEG, TGA, TIFF and OpenEXR
-// (half/float). Sizes are validated from the header before any pixel memory is allocated, and
-// saves are atomic: a failed save leaves an existing file untouched.
+// Loading and saving Images: PNG (1-16 bit; Relief's own reader and writer), JPEG, TGA, TIFF
+// and OpenEXR (half/float) through OpenImageIO, loaded when a file first needs it. Sizes are
+// validated from the header before any pixel memory is allocated, and saves are atomic: a failed
+// save leaves an existing file untouched.
 #pragma once
 
 #include "core/base/Result.h"
@@ -24,7 +25,7 @@ struct ImageFileInfo {
   int channels = 0;
   int bitsPerChannel = 0;
   bool isFloat = false;
-  std::string formatName;  // OpenImageIO's name: "png", "openexr", "jpeg", ...
+  std::string formatName;  // OpenImageIO's names: "png", "openexr", "jpeg", ...
   ColorSpace colorSpace = ColorSpace::Linear;
 };
 

@@ -1,6 +1,7 @@
-// Meshes from files through Assimp: OBJ, FBX, glTF/GLB and what else Assimp reads. All meshes
-// of the file are merged into one, in world space (node transforms applied). Tangents the file
-// carries are kept; otherwise they are computed as reference 004 describes (TangentFrames).
+// Meshes from files through Assimp (its module, AssimpModule.h): OBJ, FBX, glTF/GLB and what else
+// Assimp reads. All meshes of the file are merged into one, in world space (node transforms
+// applied). Tangents the file carries are kept; otherwise they are computed as reference 004
+// describes (TangentFrames).
 #pragma once
 
 #include "core/base/Result.h"
