@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 namespace relief::cli {
@@ -30,13 +31,40 @@ bool quiet() {
   return g_quiet;
 }
 
+void takeQuietFlag(int& argc, char* argv[]) {
+  int kept = 0;
+  for (int i = 0; i < argc; ++i) {
+    if (i > 0 && (std::strcmp(argv[i], "--quiet") == 0 || std::strcmp(argv[i], "-q") == 0)) {
+      setQuiet(true);
+      continue;
+    }
+    argv[kept++] = argv[i];
+  }
+  argc = kept;
+  argv[argc] = nullptr;
+}
+
 void printNote(const QString& text) {
   if (!g_quiet)
     printOut(text);
 }
 
+namespace {
+ErrorCapture* g_errorCapture = nullptr;  // the innermost; commands run on the main thread
+}  // namespace
+
+ErrorCapture::ErrorCapture() : m_outer(g_errorCapture) {
+  g_errorCapture = this;
+}
+
+ErrorCapture::~ErrorCapture() {
+  g_errorCapture = m_outer;
+}
+
 void printError(const QString& text) {
   std::fprintf(stderr, "relief-cli: %s\n", text.toLocal8Bit().constData());
+  if (g_errorCapture)
+    g_errorCapture->m_messages << text;
 }
 
 QStringList argumentsFrom(int argc, char* argv[]) {

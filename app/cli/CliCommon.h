@@ -26,12 +26,30 @@ void printOut(const QString& text);
 // a command was asked for (info, --json, metrics) and errors and warnings on stderr still are.
 void setQuiet(bool quiet);
 bool quiet();
+// Takes --quiet (or -q) out of argv wherever it stands after argv[0], and sets quiet() if it
+// was there: it applies to every command, which then parses the rest.
+void takeQuietFlag(int& argc, char* argv[]);
 void printNote(const QString& text);  // printOut unless --quiet
 // Core's names and labels (UTF-8 string views) as QStrings.
 inline QString qstr(std::string_view text) {
   return QString::fromUtf8(text.data(), qsizetype(text.size()));
 }
 void printError(const QString& text);  // prefixed with "relief-cli: "
+
+// While one exists, printError also keeps each message here (a batch reports each job's).
+class ErrorCapture {
+ public:
+  ErrorCapture();
+  ~ErrorCapture();
+  ErrorCapture(const ErrorCapture&) = delete;
+  ErrorCapture& operator=(const ErrorCapture&) = delete;
+  const QStringList& messages() const { return m_messages; }
+
+ private:
+  friend void printError(const QString& text);
+  ErrorCapture* m_outer;
+  QStringList m_messages;
+};
 
 // Arguments as QStrings (argv decoded with the locale, as Qt does).
 QStringList argumentsFrom(int argc, char* argv[]);

@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace relief::cli {
@@ -464,8 +465,10 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
 
 }  // namespace
 
-int runRender(int argc, char* argv[]) {
-  const QStringList arguments = argumentsFrom(argc, argv);
+namespace {
+
+// Parses a render command line into `request`; an exit code when parsing decided the outcome.
+std::optional<int> parseRender(const QStringList& arguments, RenderRequest& request) {
   QCommandLineParser parser;
   parser.setApplicationDescription(
       QStringLiteral("Render a material offscreen, exactly as the editor's viewport shows it. "
@@ -480,29 +483,19 @@ int runRender(int argc, char* argv[]) {
                                              "[options]"))) {
     return *exit;
   }
-
-  RenderRequest request;
   if (auto exit = buildRequest(parser, request))
     return *exit;
+  return std::nullopt;
+}
 
-  if (const std::string problem = app::displayProblem(); !problem.empty()) {
-    printError(QStringLiteral("render: ") + QString::fromStdString(problem));
-    return kExitFailure;
-  }
-  QSurfaceFormat::setDefaultFormat(renderer::requiredSurfaceFormat());
-  QGuiApplication application(argc, argv);
-
-  auto offscreen = renderer::OffscreenRenderer::create();
-  if (!offscreen) {
-    printError(QStringLiteral("render: ") + QString::fromStdString(offscreen.error()));
-    return kExitFailure;
-  }
-  offscreen.value()->setMesh(request.mesh);
-  offscreen.value()->setMaterial(request.material);
+// Renders `request` with `offscreen`, writes the image and prints what was asked.
+int renderRequest(renderer::OffscreenRenderer& offscreen, const RenderRequest& request) {
+  offscreen.setMesh(request.mesh);
+  offscreen.setMaterial(request.material);
   QJsonObject report;
   core::Result<core::Image> image = request.frame.debugView == core::DebugView::Error
-                                        ? renderErrorView(*offscreen.value(), request, report)
-                                        : renderView(*offscreen.value(), request);
+                                        ? renderErrorView(offscreen, request, report)
+                                        : renderView(offscreen, request);
   if (!image) {
     printError(QStringLiteral("render: ") + QString::fromStdString(image.error()));
     return kExitFailure;
@@ -516,7 +509,7 @@ int runRender(int argc, char* argv[]) {
     return kExitFailure;
   }
   if (request.stats) {
-    core::Result<QJsonObject> cost = measureCost(*offscreen.value(), request);
+    core::Result<QJsonObject> cost = measureCost(offscreen, request);
     if (!cost) {
       printError(QStringLiteral("render --stats: ") + QString::fromStdString(cost.error()));
       return kExitFailure;
@@ -538,6 +531,55 @@ int runRender(int argc, char* argv[]) {
     printJson(report);
   }
   return kExitOk;
+}
+
+RenderSession* g_session = nullptr;
+
+}  // namespace
+
+int runRender(int argc, char* argv[]) {
+  RenderRequest request;
+  if (auto exit = parseRender(argumentsFrom(argc, argv), request))
+    return *exit;
+  if (const std::string problem = app::displayProblem(); !problem.empty()) {
+    printError(QStringLiteral("render: ") + QString::fromStdString(problem));
+    return kExitFailure;
+  }
+  QSurfaceFormat::setDefaultFormat(renderer::requiredSurfaceFormat());
+  QGuiApplication application(argc, argv);
+  auto offscreen = renderer::OffscreenRenderer::create();
+  if (!offscreen) {
+    printError(QStringLiteral("render: ") + QString::fromStdString(offscreen.error()));
+    return kExitFailure;
+  }
+  return renderRequest(*offscreen.value(), request);
+}
+
+RenderSession::RenderSession() {
+  g_session = this;
+}
+
+RenderSession::~RenderSession() {
+  g_session = nullptr;
+}
+
+int RenderSession::runJob(const QStringList& arguments) {
+  RenderRequest request;
+  if (auto exit = parseRender(arguments, request))
+    return *exit;
+  if (!g_session) {
+    printError(QStringLiteral("render: no render session (a program error)"));
+    return kExitFailure;
+  }
+  if (!g_session->m_offscreen) {
+    auto offscreen = renderer::OffscreenRenderer::create();
+    if (!offscreen) {
+      printError(QStringLiteral("render: ") + QString::fromStdString(offscreen.error()));
+      return kExitFailure;
+    }
+    g_session->m_offscreen = std::move(offscreen.value());
+  }
+  return renderRequest(*g_session->m_offscreen, request);
 }
 
 }  // namespace relief::cli

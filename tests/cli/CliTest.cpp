@@ -1,5 +1,6 @@
 // relief-cli as a user runs it: on the samples, and on bad input (each must be a clear error
 // naming the file, a non-zero exit and no crash). `render` runs under the test's X display.
+#include "cli/CliRunner.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
 #include "support/ImageCompare.h"
@@ -25,31 +26,6 @@
 
 namespace relief::test {
 namespace {
-
-struct CliRun {
-  int exitCode = -1;
-  bool crashed = false;
-  std::string out;
-  std::string err;
-};
-
-CliRun runCli(const QStringList& arguments,
-              const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
-  QProcess process;
-  process.setProcessEnvironment(environment);
-  process.start(QStringLiteral(RELIEF_CLI_PATH), arguments);
-  CliRun run;
-  if (!process.waitForFinished(120000)) {
-    process.kill();
-    run.crashed = true;
-    return run;
-  }
-  run.crashed = process.exitStatus() != QProcess::NormalExit;
-  run.exitCode = process.exitCode();
-  run.out = process.readAllStandardOutput().toStdString();
-  run.err = process.readAllStandardError().toStdString();
-  return run;
-}
 
 QString q(const std::string& text) {
   return QString::fromStdString(text);

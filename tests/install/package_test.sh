@@ -14,7 +14,8 @@ fail() {
 (cd "$build" && cpack -G DEB -B "$out" >/dev/null)
 deb=$(ls "$out"/relief_*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
-for package in libqt6widgets6 libopenimageio2.4 android-libetc1 qt6-qpa-plugins; do
+# OpenImageIO and Assimp are linked by the modules only: dpkg-shlibdeps must find them there.
+for package in libqt6widgets6 libopenimageio2.4 libassimp5 android-libetc1 qt6-qpa-plugins; do
   case "$depends" in
     *"$package"*) ;;
     *) fail "Depends lacks $package: $depends" ;;
@@ -22,8 +23,13 @@ for package in libqt6widgets6 libopenimageio2.4 android-libetc1 qt6-qpa-plugins;
 done
 contents=$(dpkg-deb -c "$deb")
 for path in ./usr/bin/relief ./usr/bin/relief-cli ./usr/share/relief/samples/bricks/bricks.relief \
+  ./usr/libexec/relief/relief-cli-render \
   ./usr/share/applications/org.reliefeditor.Relief.desktop ./usr/share/doc/relief/copyright; do
   grep -q " $path\$" <<<"$contents" || fail "the package lacks $path"
+done
+# The modules, in lib/relief or lib/<arch>/relief (GNUInstallDirs' choice for the prefix).
+for module in librelief_oiio.so librelief_assimp.so; do
+  grep -qE " \./usr/lib/([^/]+/)?relief/$module\$" <<<"$contents" || fail "the package lacks $module"
 done
 # Errors fail; warnings and infos are printed for the log.
 lintian --fail-on error "$deb"
