@@ -14,11 +14,9 @@ namespace relief::core::inline image {
 
 // What OpenImageIO reports of a file's first subimage.
 struct OiioHeader {
-  int x = 0, y = 0, z = 0;  // the data window's origin
   int width = 0, height = 0, depth = 0;
   int channels = 0;
-  int tileWidth = 0, tileHeight = 0;  // 0 for scanline files
-  int bitsPerSample = 0;              // "oiio:BitsPerSample", else the sample type's size
+  int bitsPerSample = 0;  // "oiio:BitsPerSample", else the sample type's size
   bool isFloat = false;
   std::string formatName;      // "png", "openexr", "jpeg", ...
   std::string colorSpaceName;  // "oiio:ColorSpace"

@@ -26,15 +26,10 @@ class Input final : public OiioInput {
   Input(std::string path, std::unique_ptr<OIIO::ImageInput> input)
       : m_path(std::move(path)), m_input(std::move(input)) {
     const OIIO::ImageSpec& spec = m_input->spec();
-    m_header.x = spec.x;
-    m_header.y = spec.y;
-    m_header.z = spec.z;
     m_header.width = spec.width;
     m_header.height = spec.height;
     m_header.depth = spec.depth;
     m_header.channels = spec.nchannels;
-    m_header.tileWidth = spec.tile_width;
-    m_header.tileHeight = spec.tile_height;
     m_header.bitsPerSample =
         spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8));
     m_header.isFloat = spec.format.is_floating_point();
