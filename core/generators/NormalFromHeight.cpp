@@ -35,69 +35,89 @@ Plane firstChannel(const Image& image) {
   return plane;
 }
 
-// Gradient at x of the rows above (rows[0..]) per kernel. `rows` are the five rows y-2..y+2
-// (top first, i.e. increasing image row), `xi` the edge-resolved column table with margin 2.
+// Gradient at x of the rows above per kernel. `rows` are the five rows y-2..y+2 (top first,
+// i.e. increasing image row); column(k) is the edge-resolved column for offset k from x.
 struct Gradient {
   float dx, dyUp;
 };
 
-inline Gradient gradientAt(GradientKernel kernel, const float* const rows[5], const int* xi,
-                           int x) {
-  // xi[x + 2 + k] is the column for offset k.
-  const int* c = xi + x + 2;
+template <GradientKernel kKernel, class Column>
+inline Gradient gradientAt(const float* const rows[5], Column column) {
   const float* up = rows[1];
   const float* mid = rows[2];
   const float* down = rows[3];
-  switch (kernel) {
-    case GradientKernel::Central:
-      return {0.5f * (mid[c[1]] - mid[c[-1]]), 0.5f * (up[c[0]] - down[c[0]])};
-    case GradientKernel::Sobel: {
-      const float dx = (up[c[1]] + 2.0f * mid[c[1]] + down[c[1]]) -
-                       (up[c[-1]] + 2.0f * mid[c[-1]] + down[c[-1]]);
-      const float dy =
-          (up[c[-1]] + 2.0f * up[c[0]] + up[c[1]]) - (down[c[-1]] + 2.0f * down[c[0]] + down[c[1]]);
-      return {dx / 8.0f, dy / 8.0f};
-    }
-    case GradientKernel::Scharr: {
-      const float dx = (3.0f * up[c[1]] + 10.0f * mid[c[1]] + 3.0f * down[c[1]]) -
-                       (3.0f * up[c[-1]] + 10.0f * mid[c[-1]] + 3.0f * down[c[-1]]);
-      const float dy = (3.0f * up[c[-1]] + 10.0f * up[c[0]] + 3.0f * up[c[1]]) -
-                       (3.0f * down[c[-1]] + 10.0f * down[c[0]] + 3.0f * down[c[1]]);
-      return {dx / 32.0f, dy / 32.0f};
-    }
-    case GradientKernel::Sobel5: {
-      static constexpr float kSmooth[5] = {1, 4, 6, 4, 1};
-      static constexpr float kDerive[5] = {-1, -2, 0, 2, 1};
-      float dx = 0.0f, dy = 0.0f;
-      for (int j = 0; j < 5; ++j) {
-        const float* r = rows[j];
-        for (int i = 0; i < 5; ++i) {
-          const float h = r[c[i - 2]];
-          dx += kSmooth[j] * kDerive[i] * h;
-          dy -= kDerive[j] * kSmooth[i] * h;  // rows grow downward; y grows up
-        }
+  if constexpr (kKernel == GradientKernel::Central) {
+    return {0.5f * (mid[column(1)] - mid[column(-1)]), 0.5f * (up[column(0)] - down[column(0)])};
+  } else if constexpr (kKernel == GradientKernel::Sobel) {
+    const int l = column(-1), c = column(0), r = column(1);
+    const float dx = (up[r] + 2.0f * mid[r] + down[r]) - (up[l] + 2.0f * mid[l] + down[l]);
+    const float dy = (up[l] + 2.0f * up[c] + up[r]) - (down[l] + 2.0f * down[c] + down[r]);
+    return {dx / 8.0f, dy / 8.0f};
+  } else if constexpr (kKernel == GradientKernel::Scharr) {
+    const int l = column(-1), c = column(0), r = column(1);
+    const float dx = (3.0f * up[r] + 10.0f * mid[r] + 3.0f * down[r]) -
+                     (3.0f * up[l] + 10.0f * mid[l] + 3.0f * down[l]);
+    const float dy = (3.0f * up[l] + 10.0f * up[c] + 3.0f * up[r]) -
+                     (3.0f * down[l] + 10.0f * down[c] + 3.0f * down[r]);
+    return {dx / 32.0f, dy / 32.0f};
+  } else {
+    static_assert(kKernel == GradientKernel::Sobel5);
+    static constexpr float kSmooth[5] = {1, 4, 6, 4, 1};
+    static constexpr float kDerive[5] = {-1, -2, 0, 2, 1};
+    float dx = 0.0f, dy = 0.0f;
+    for (int j = 0; j < 5; ++j) {
+      const float* r = rows[j];
+      for (int i = 0; i < 5; ++i) {
+        const float h = r[column(i - 2)];
+        dx += kSmooth[j] * kDerive[i] * h;
+        dy -= kDerive[j] * kSmooth[i] * h;  // rows grow downward; y grows up
       }
-      return {dx / 128.0f, dy / 128.0f};
     }
+    return {dx / 128.0f, dy / 128.0f};
   }
-  return {0.0f, 0.0f};
 }
 
-// Calls visit(y, x, gradient) for every texel, rows in parallel.
-template <class Visit>
-bool forEachGradient(const Plane& plane, GradientKernel kernel, EdgeMode edge,
-                     const WorkControl& control, Visit visit) {
+// Calls visit(y, x, gradient) for every texel, rows in parallel. Columns two or more texels
+// from the edges index the rows directly; only the border goes through the edge table (the
+// per-texel table lookups and kernel switch made this loop half the generator's time).
+template <GradientKernel kKernel, class Visit>
+bool forEachGradientOf(const Plane& plane, EdgeMode edge, const WorkControl& control,
+                       Visit& visit) {
   const std::vector<int> xi = edgeIndexTable(plane.width, 2, edge);
+  const int interiorEnd = std::max(2, plane.width - 2);
   return parallelFor(
       plane.height,
       [&](int y) {
         const float* rows[5];
         for (int j = 0; j < 5; ++j)
           rows[j] = plane.row(edgeIndex(y + j - 2, plane.height, edge));
-        for (int x = 0; x < plane.width; ++x)
-          visit(y, x, gradientAt(kernel, rows, xi.data(), x));
+        const auto border = [&](int x) {
+          visit(y, x, gradientAt<kKernel>(rows, [&](int k) { return xi[std::size_t(x + 2 + k)]; }));
+        };
+        for (int x = 0; x < std::min(2, plane.width); ++x)
+          border(x);
+        for (int x = 2; x < interiorEnd; ++x)
+          visit(y, x, gradientAt<kKernel>(rows, [x](int k) { return x + k; }));
+        for (int x = interiorEnd; x < plane.width; ++x)
+          border(x);
       },
       control);
+}
+
+template <class Visit>
+bool forEachGradient(const Plane& plane, GradientKernel kernel, EdgeMode edge,
+                     const WorkControl& control, Visit visit) {
+  switch (kernel) {
+    case GradientKernel::Central:
+      return forEachGradientOf<GradientKernel::Central>(plane, edge, control, visit);
+    case GradientKernel::Sobel:
+      return forEachGradientOf<GradientKernel::Sobel>(plane, edge, control, visit);
+    case GradientKernel::Scharr:
+      return forEachGradientOf<GradientKernel::Scharr>(plane, edge, control, visit);
+    case GradientKernel::Sobel5:
+      return forEachGradientOf<GradientKernel::Sobel5>(plane, edge, control, visit);
+  }
+  return false;
 }
 
 }  // namespace
@@ -117,7 +137,7 @@ Image heightGradient(const Image& height, GradientKernel kernel, EdgeMode edge,
 Image normalMapFromHeight(const Image& height, const NormalFromHeightOptions& options,
                           const WorkControl& control) {
   const float ySign = options.convention == NormalConvention::DirectX ? -1.0f : 1.0f;
-  Image normals(height.width(), height.height(), 3, ColorSpace::Linear);
+  Image normals = Image::forOverwrite(height.width(), height.height(), 3, ColorSpace::Linear);
   normals.setSourceBitsPerChannel(16);
   const auto writeNormal = [&](int y, int x, float dx, float dyUp) {
     const float nx = -options.strength * dx;

@@ -225,7 +225,8 @@ Result<Image> loadImage(const std::string& path) {
   if (!checked)
     return makeError(checked.error());
   if (const std::optional<PngHeader>& png = checked->png) {
-    Image image(int(png->width), int(png->height), png->channels(), png->colorSpace);
+    Image image =
+        Image::forOverwrite(int(png->width), int(png->height), png->channels(), png->colorSpace);
     image.setSourceBitsPerChannel(png->bitsPerChannel());
     const Result<PngFastDecode> decoded = decodePngPixels(path, image);
     if (!decoded)
