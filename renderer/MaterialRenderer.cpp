@@ -513,24 +513,37 @@ core::Result<core::Image> MaterialRenderer::renderToImage(const FrameSettings& f
   return image;
 }
 
-core::Result<double> MaterialRenderer::medianFrameMilliseconds(const FrameSettings& frame,
-                                                               int width, int height, int frames) {
+core::Result<FrameTimes> MaterialRenderer::timeFrames(const FrameSettings& frame, int width,
+                                                      int height, const FrameTiming& timing) {
   QOpenGLFramebufferObject fbo(width, height, QOpenGLFramebufferObject::Depth);
   if (!fbo.isValid())
     return core::makeError("cannot create a " + std::to_string(width) + "x" +
                            std::to_string(height) + " framebuffer (out of GPU memory?)");
   std::vector<double> times;
-  for (int i = 0; i <= std::max(frames, 1); ++i) {
+  const auto drawOne = [&]() -> core::Result<double> {
     const auto start = std::chrono::steady_clock::now();
     if (core::Status status = render(frame, width, height, fbo.handle()); !status)
       return core::makeError(status.error());
     glFinish();
-    const auto end = std::chrono::steady_clock::now();
-    if (i > 0)
-      times.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+  };
+  if (core::Result<double> first = drawOne(); !first)  // compiles and uploads: not timed
+    return core::makeError(first.error());
+  const int minFrames = std::max(timing.minFrames, 1);
+  const int maxFrames = std::max(timing.maxFrames, minFrames);
+  const auto start = std::chrono::steady_clock::now();
+  while (int(times.size()) < maxFrames) {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (int(times.size()) >= minFrames && elapsed >= timing.minSeconds)
+      break;
+    core::Result<double> milliseconds = drawOne();
+    if (!milliseconds)
+      return core::makeError(milliseconds.error());
+    times.push_back(milliseconds.value());
   }
-  std::nth_element(times.begin(), times.begin() + std::ptrdiff_t(times.size() / 2), times.end());
-  return times[times.size() / 2];
+  return summarizeFrameTimes(std::move(times));
 }
 
 }  // namespace relief::renderer

@@ -10,6 +10,7 @@
 #include "core/mesh/Mesh.h"
 #include "renderer/EnvironmentLight.h"
 #include "renderer/FrameSettings.h"
+#include "renderer/FrameTimes.h"
 #include "renderer/GpuMesh.h"
 #include "renderer/ShaderProgram.h"
 #include "renderer/TextureCache.h"
@@ -61,11 +62,12 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   // RGBA32F for data. Rows top first. A `scale` below 1 draws as renderReduced does.
   core::Result<core::Image> renderToImage(const FrameSettings& frame, int width, int height,
                                           float scale = 1.0f);
-  // The median time of `frames` renders of `frame` into a framebuffer of the size, each drawn
-  // and finished (glFinish) on the CPU clock, after one untimed frame (compiling, uploading).
+  // Times renders of `frame` into a framebuffer of the size, each drawn and finished
+  // (glFinish) on the CPU clock, after one untimed frame (compiling, uploading): at least
+  // `timing.minFrames` and, up to `timing.maxFrames`, until `timing.minSeconds` have passed.
   // GL timer queries are not used: llvmpipe reports nonsense for them.
-  core::Result<double> medianFrameMilliseconds(const FrameSettings& frame, int width, int height,
-                                               int frames);
+  core::Result<FrameTimes> timeFrames(const FrameSettings& frame, int width, int height,
+                                      const FrameTiming& timing);
 
   // Largest width or height renderToImage accepts on this GPU.
   int maxImageSize();

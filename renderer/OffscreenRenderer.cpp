@@ -77,11 +77,11 @@ core::Result<core::Image> OffscreenRenderer::render(const RenderView& view, int 
   return render(frame, width, height);
 }
 
-core::Result<double> OffscreenRenderer::medianFrameMilliseconds(const FrameSettings& frame,
-                                                                int width, int height, int frames) {
+core::Result<FrameTimes> OffscreenRenderer::timeFrames(const FrameSettings& frame, int width,
+                                                       int height, const FrameTiming& timing) {
   if (!makeCurrent())
     return core::makeError("cannot make the offscreen OpenGL context current");
-  return m_renderer->medianFrameMilliseconds(frame, width, height, frames);
+  return m_renderer->timeFrames(frame, width, height, timing);
 }
 
 core::Result<SampleCount> OffscreenRenderer::countHeightSamples(const FrameSettings& frame,

@@ -9,6 +9,7 @@
 #include "core/mesh/Mesh.h"
 #include "renderer/ErrorView.h"
 #include "renderer/FrameSettings.h"
+#include "renderer/FrameTimes.h"
 #include "renderer/SampleCount.h"
 
 #include <memory>
@@ -48,9 +49,9 @@ class OffscreenRenderer {
                                    float scale = 1.0f);
   // The shaded material (Display output, no debug view).
   core::Result<core::Image> render(const RenderView& view, int width, int height);
-  // The median of `frames` timed frames (MaterialRenderer::medianFrameMilliseconds).
-  core::Result<double> medianFrameMilliseconds(const FrameSettings& frame, int width, int height,
-                                               int frames);
+  // Timed frames of `frame` (MaterialRenderer::timeFrames).
+  core::Result<FrameTimes> timeFrames(const FrameSettings& frame, int width, int height,
+                                      const FrameTiming& timing);
   // Height samples per covered pixel of the frame (SampleCount.h).
   core::Result<SampleCount> countHeightSamples(const FrameSettings& frame, int width, int height);
   // Prefilters the environment `source` names (a built-in or a file, through

@@ -118,9 +118,12 @@ CliOptions renderOptions() {
       {QStringLiteral("stats"),
        {},
        QStringLiteral("Also measure the frame's cost and print it as one JSON object: "
-                      "{\"frame_ms\": the median of 5 frames drawn and finished "
-                      "(glFinish), \"samples_per_pixel\": {\"mean\", \"p95\", "
-                      "\"max\"} height samples (texel fetches) per covered pixel, "
+                      "{\"frame_ms\": the median frame time, each frame drawn and finished "
+                      "(glFinish), over at least 10 frames and 1 second; \"frame_ms_min\": "
+                      "the fastest frame, the steadiest figure to rank techniques by on a "
+                      "busy machine; \"frame_ms_p90\"; \"frames\"; \"frame_spread\": "
+                      "(p90 - fastest) / median; \"samples_per_pixel\": {\"mean\", "
+                      "\"p95\", \"max\"} height samples (texel fetches) per covered pixel, "
                       "\"pixels\": covered pixels}. With --json, in its object."),
        {}});
   options.push_back(
@@ -413,23 +416,26 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
   return std::nullopt;
 }
 
-// The frame's cost (--stats): the median frame time and the height samples per covered pixel.
+// The frame's cost (--stats): frame times and the height samples per covered pixel.
 core::Result<QJsonObject> measureCost(renderer::OffscreenRenderer& offscreen,
                                       const RenderRequest& request) {
-  constexpr int kTimedFrames = 5;
   renderer::FrameSettings shaded = request.frame;
   shaded.debugView = core::DebugView::Shading;
   shaded.output = renderer::FrameOutput::Display;
-  core::Result<double> milliseconds =
-      offscreen.medianFrameMilliseconds(shaded, request.width, request.height, kTimedFrames);
-  if (!milliseconds)
-    return core::makeError(milliseconds.error());
+  core::Result<renderer::FrameTimes> times =
+      offscreen.timeFrames(shaded, request.width, request.height, renderer::FrameTiming{});
+  if (!times)
+    return core::makeError(times.error());
   core::Result<renderer::SampleCount> samples =
       offscreen.countHeightSamples(request.frame, request.width, request.height);
   if (!samples)
     return core::makeError(samples.error());
   return QJsonObject{
-      {QStringLiteral("frame_ms"), milliseconds.value()},
+      {QStringLiteral("frame_ms"), times->median},
+      {QStringLiteral("frame_ms_min"), times->fastest},
+      {QStringLiteral("frame_ms_p90"), times->p90},
+      {QStringLiteral("frames"), times->frames},
+      {QStringLiteral("frame_spread"), times->spread()},
       {QStringLiteral("samples_per_pixel"), QJsonObject{{QStringLiteral("mean"), samples->mean},
                                                         {QStringLiteral("p95"), samples->p95},
                                                         {QStringLiteral("max"), samples->max}}},

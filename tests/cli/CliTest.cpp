@@ -176,7 +176,16 @@ TEST(Cli, RenderStatsCountHeightSamplesPerCoveredPixel) {
     return QJsonDocument::fromJson(QByteArray::fromStdString(run.out)).object();
   };
   const QJsonObject pom = stats("pom");
-  EXPECT_GT(pom.value(QStringLiteral("frame_ms")).toDouble(), 0.0);
+  // The frame times: at least 10 frames, ordered fastest <= median <= p90, and the spread is
+  // (p90 - fastest) / median.
+  const double median = pom.value(QStringLiteral("frame_ms")).toDouble();
+  const double fastest = pom.value(QStringLiteral("frame_ms_min")).toDouble();
+  const double p90 = pom.value(QStringLiteral("frame_ms_p90")).toDouble();
+  EXPECT_GT(fastest, 0.0);
+  EXPECT_LE(fastest, median);
+  EXPECT_LE(median, p90);
+  EXPECT_GE(pom.value(QStringLiteral("frames")).toInt(), 10);
+  EXPECT_NEAR(pom.value(QStringLiteral("frame_spread")).toDouble(), (p90 - fastest) / median, 1e-9);
   EXPECT_GT(pom.value(QStringLiteral("pixels")).toDouble(), 1000.0);
   const QJsonObject samples = pom.value(QStringLiteral("samples_per_pixel")).toObject();
   EXPECT_GE(samples.value(QStringLiteral("mean")).toDouble(), 1.0);

@@ -109,10 +109,10 @@ int main(int argc, char* argv[]) {
     // A narrow field of view keeps each view pure: at "grazing" every pixel sees the surface
     // between 5 and 25 degrees, instead of a spread from the horizon to 35 degrees.
     frame.view.camera.fovYDeg = 20.0f;
-    // The same timing as relief-cli render --stats: an untimed first frame, then the median.
-    core::Result<double> milliseconds =
-        materialRenderer.medianFrameMilliseconds(frame, width, height, repeats);
-    return milliseconds ? milliseconds.value() : -1.0;
+    // An untimed first frame, then the median of `repeats` frames.
+    core::Result<renderer::FrameTimes> times = materialRenderer.timeFrames(
+        frame, width, height, renderer::FrameTiming{repeats, 0.0, repeats});
+    return times ? times->median : -1.0;
   };
 
   std::vector<Row> rows;
