@@ -29,8 +29,9 @@ if ! command -v npm >/dev/null 2>&1; then
 fi
 
 if [ "${1:-}" = "--bench" ]; then
-  # OpenCV for bench-generate and bench-cli; nvcompress (NVIDIA Texture Tools 2) for bench-cli.
-  packages+=(python3-opencv libnvtt-bin)
+  # OpenCV for bench-generate and bench-cli; for bench-cli also nvcompress (NVIDIA Texture
+  # Tools 2), the astcenc command and GNU parallel (the farm recipe of docs/pipelines.md).
+  packages+=(python3-opencv libnvtt-bin astcenc parallel)
 fi
 
 missing=()
