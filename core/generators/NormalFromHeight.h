@@ -44,7 +44,8 @@ struct NormalFromHeightOptions {
 };
 
 // From the first channel of `height`. Returns an RGB image encoding n * 0.5 + 0.5, linear,
-// normalised.
+// normalised. When `control` cancels, the texels not reached are left unset (the image is
+// allocated for overwrite): discard a cancelled result, as runGenerator does.
 Image normalMapFromHeight(const Image& height, const NormalFromHeightOptions& options,
                           const WorkControl& control = {});
 
