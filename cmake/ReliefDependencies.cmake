@@ -1,6 +1,9 @@
-# Finds every third-party dependency once, with the workarounds PLATFORM.md documents.
+# Finds every third-party dependency once, with the workarounds Debian 12's packages need.
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent Charts Test)
 find_package(OpenImageIO REQUIRED CONFIG)
+# OpenEXR's own library writes the EXR files tests/core/ImageConformanceTest.cpp reads (an
+# independent writer); the app reads EXR through OpenImageIO.
+find_package(OpenEXR REQUIRED CONFIG)
 find_package(glm REQUIRED)
 find_package(assimp REQUIRED)
 find_package(Threads REQUIRED)
@@ -24,7 +27,7 @@ foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
   endif()
 endforeach()
 
-# Texture codecs (PLATFORM.md). libsquish has no CMake config and an empty pkg-config prefix;
+# Texture codecs. libsquish has no CMake config and an empty pkg-config prefix;
 # android-libetc1 lives in a private folder without any metadata, so it is linked by path with
 # an rpath (CMake adds it for full library paths outside the system folders).
 find_path(SQUISH_INCLUDE_DIR squish.h REQUIRED)

@@ -90,6 +90,8 @@ int runInfo(const QStringList& arguments) {
         {QStringLiteral("bitsPerChannel"), info->bitsPerChannel},
         {QStringLiteral("float"), info->isFloat},
         {QStringLiteral("fileColorSpace"), qstr(core::colorSpaceName(info->colorSpace))},
+        {QStringLiteral("subimages"), info->subimages},
+        {QStringLiteral("subimageRead"), QString::fromStdString(info->subimageName)},
         {QStringLiteral("readAs"), readAs},
         {QStringLiteral("slotFromName"),
          slotByName ? QJsonValue(qstr(core::mapSlotName(*slotByName))) : QJsonValue()}};
@@ -112,6 +114,16 @@ int runInfo(const QStringList& arguments) {
                .arg(info->bitsPerChannel)
                .arg(info->isFloat ? QStringLiteral("float") : QStringLiteral("integer"))
                .arg(qstr(core::colorSpaceName(info->colorSpace)), readAs));
+  if (info->subimages > 1) {
+    const QString name = info->subimageName.empty()
+                             ? QString()
+                             : QStringLiteral(" (\"%1\")").arg(qstr(info->subimageName));
+    printOut(QStringLiteral("note: the file holds %1 images (an EXR's parts, a TIFF's pages); "
+                            "Relief reads the first%2 alone. Extract another with "
+                            "`oiiotool %3 --subimage N -o FILE`.\n")
+                 .arg(info->subimages)
+                 .arg(name, path));
+  }
   return kExitOk;
 }
 

@@ -13,6 +13,7 @@
 #include "core/image/PngReader.h"
 #include "core/image/PngVerify.h"
 #include "core/image/PngWriter.h"
+#include "core/image/TiffPreflight.h"
 
 #include <algorithm>
 #include <csignal>
@@ -112,6 +113,10 @@ Result<CheckedFile> checkImageFile(const std::string& path) {
     if (Status header = preflightExr(path, readable.value()); !header)
       return makeError(header.error());
   }
+  if (sniffed.reader == "tiff") {
+    if (Status directory = preflightTiff(path); !directory)
+      return makeError(directory.error());
+  }
   if (sniffed.reader == "png") {
     Result<PngHeader> header = preflightPng(path, readable.value());
     if (!header)
@@ -196,6 +201,8 @@ Result<ImageFileInfo> readImageInfo(const std::string& path) {
   info.isFloat = header.isFloat;
   info.formatName = header.formatName;
   info.colorSpace = colorSpaceOf(header);
+  info.subimages = header.subimages;
+  info.subimageName = header.subimageName;
   return info;
 }
 

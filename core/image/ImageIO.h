@@ -27,6 +27,8 @@ struct ImageFileInfo {
   bool isFloat = false;
   std::string formatName;  // OpenImageIO's names: "png", "openexr", "jpeg", ...
   ColorSpace colorSpace = ColorSpace::Linear;
+  int subimages = 1;         // a multi-part EXR's parts, a multi-page TIFF's pages
+  std::string subimageName;  // the name of the first, which Relief reads (EXR parts have one)
 };
 
 enum class SampleFormat {

@@ -20,6 +20,8 @@ struct OiioHeader {
   bool isFloat = false;
   std::string formatName;      // "png", "openexr", "jpeg", ...
   std::string colorSpaceName;  // "oiio:ColorSpace"
+  int subimages = 1;           // an EXR's parts, a TIFF's pages; Relief reads the first
+  std::string subimageName;    // the first part's name ("oiio:subimagename"), if it has one
 };
 
 class OiioInput {

@@ -7,6 +7,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <fstream>
 #include <vector>
 
 namespace relief::core::inline image {
@@ -19,6 +20,21 @@ std::string cleanOiioMessage(std::string message) {
   }
   std::replace(message.begin(), message.end(), '\n', ' ');
   return message.empty() ? std::string("unknown error") : message;
+}
+
+// OpenImageIO 2.4 sets a TGA's "oiio:BitsPerSample" to the stored bits per pixel over the
+// channels, which for a colour-mapped file divides the 8-bit index (8 / 3 = 2 bits). Its texels
+// have the palette entries' depth: 8 bits a channel for 24- and 32-bit entries, 5 for 15- and
+// 16-bit ones (TGA header: image type at byte 2, 1 or 9 when colour-mapped; entry size at 7).
+int targaBitsPerSample(const std::string& path, int reported) {
+  unsigned char header[8] = {};
+  std::ifstream file(path, std::ios::binary);
+  if (!file.read(reinterpret_cast<char*>(header), sizeof header))
+    return reported;
+  const bool colourMapped = header[2] == 1 || header[2] == 9;
+  if (!colourMapped)
+    return reported;
+  return header[7] >= 24 ? 8 : 5;
 }
 
 class Input final : public OiioInput {
@@ -35,6 +51,10 @@ class Input final : public OiioInput {
     m_header.isFloat = spec.format.is_floating_point();
     m_header.formatName = m_input->format_name();
     m_header.colorSpaceName = spec.get_string_attribute("oiio:ColorSpace");
+    m_header.subimageName = spec.get_string_attribute("oiio:subimagename");
+    if (m_header.formatName == "targa")
+      m_header.bitsPerSample = targaBitsPerSample(m_path, m_header.bitsPerSample);
+    countSubimages();
   }
 
   const OiioHeader& header() const override { return m_header; }
@@ -91,6 +111,21 @@ class Input final : public OiioInput {
                        cleanOiioMessage(m_input->geterror()) + ")");
     }
     return {};
+  }
+
+  // Multi-part EXRs and multi-page TIFFs: how many there are, so `info` can say that Relief
+  // reads the first. The reader is left on the first. A cap keeps a file that claims thousands
+  // of parts from costing a seek each (libtiff already refuses loops of pages).
+  void countSubimages() {
+    constexpr int kMostCounted = 1024;
+    int count = 1;
+    while (count < kMostCounted && m_input->seek_subimage(count, 0))
+      ++count;
+    m_header.subimages = count;
+    // The failed seek past the last one leaves an error pending (which close() would report as
+    // damage) and, in the TIFF reader, its directory moved: clear it and go back to the first.
+    (void)m_input->geterror();
+    m_input->seek_subimage(0, 0);
   }
 
   std::string m_path;

@@ -1337,6 +1337,13 @@ TEST(Cli, InfoReadsTiledTiffAndMipMappedExr) {
       {QStringLiteral("--pattern"), QStringLiteral("checker"), QStringLiteral("250x130"),
        QStringLiteral("3"), QStringLiteral("-d"), QStringLiteral("half"), QStringLiteral("-otex"),
        q(folder + "/mip.exr")},
+      // Two parts, as a compositor writes passes: Relief reads the first and says so.
+      {QStringLiteral("--pattern"), QStringLiteral("constant:color=0.5"), QStringLiteral("250x130"),
+       QStringLiteral("1"), QStringLiteral("--attrib"), QStringLiteral("oiio:subimagename"),
+       QStringLiteral("height"), QStringLiteral("--pattern"), QStringLiteral("checker"),
+       QStringLiteral("250x130"), QStringLiteral("3"), QStringLiteral("--siappend"),
+       QStringLiteral("-d"), QStringLiteral("half"), QStringLiteral("-o"),
+       q(folder + "/parts.exr")},
   };
   for (const QStringList& arguments : writes) {
     QProcess oiiotool;
@@ -1344,12 +1351,23 @@ TEST(Cli, InfoReadsTiledTiffAndMipMappedExr) {
     ASSERT_TRUE(oiiotool.waitForFinished(60000));
     ASSERT_EQ(oiiotool.exitCode(), 0) << oiiotool.readAllStandardError().toStdString();
   }
-  for (const char* name : {"tiled.tif", "mip.exr"}) {
+  for (const char* name : {"tiled.tif", "mip.exr", "parts.exr"}) {
     const CliRun run = runCli({QStringLiteral("info"), q(folder + "/" + name)});
     EXPECT_FALSE(run.crashed) << name;
     EXPECT_EQ(run.exitCode, 0) << name << ": " << run.err;
     EXPECT_NE(run.out.find("size: 250x130"), std::string::npos) << run.out;
+    // Only a file of several parts gets the note.
+    EXPECT_EQ(run.out.find("note: the file holds 2 images") != std::string::npos,
+              std::string(name) == "parts.exr")
+        << run.out;
   }
+  const CliRun parts = runCli({QStringLiteral("info"), q(folder + "/parts.exr")});
+  EXPECT_NE(parts.out.find("channels: 1\n"), std::string::npos) << parts.out;
+  EXPECT_NE(parts.out.find("reads the first (\"height\") alone"), std::string::npos) << parts.out;
+  const CliRun json =
+      runCli({QStringLiteral("info"), q(folder + "/parts.exr"), QStringLiteral("--json")});
+  EXPECT_NE(json.out.find("\"subimages\":2"), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"subimageRead\":\"height\""), std::string::npos) << json.out;
 }
 
 TEST(Cli, SavingOverAFolderSaysSoAndKeepsIt) {

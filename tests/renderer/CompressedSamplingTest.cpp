@@ -1,4 +1,4 @@
-// Our decoders against an independent one: the GPU driver (Mesa's llvmpipe here; PLATFORM.md).
+// Our decoders against an independent one: the GPU driver (Mesa's llvmpipe here).
 // Blocks are uploaded with glCompressedTexImage2D, read back texel by texel with texelFetch into
 // a float framebuffer, and compared with core's decoder within 1/255. Random bytes exercise
 // every block mode a format has (BC1's three-colour mode, BC4's six-value mode, ETC2's T, H and

@@ -1,7 +1,7 @@
 // bench-viewport: what each parallax technique costs. Renders 1280x720 offscreen for every
 // technique x sample count x view (head-on, 45 degrees, grazing 15 degrees) with the
 // cobblestones sample on a plane that fills the frame in every view, times draw + glFinish on the
-// CPU clock (GL timer queries report nonsense on llvmpipe; PLATFORM.md), takes the median of
+// CPU clock (GL timer queries report nonsense on llvmpipe), takes the median of
 // several runs and prints each row's ratio to `normal` for the same view, measured in the same run.
 //
 // A second table times the shading models (classic Blinn-Phong, pbr metallic-roughness with the
