@@ -2,6 +2,7 @@
 #include "renderer/HeatmapLegend.h"
 
 #include "core/image/Heatmap.h"
+#include "core/tracing/UvErrorMap.h"
 
 #include <QFont>
 #include <QFontMetrics>
@@ -9,6 +10,7 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <cmath>
 
 namespace relief::renderer {
 namespace {
@@ -38,11 +40,17 @@ std::optional<HeatmapLegend> legendFor(core::DebugView view, const core::Materia
   switch (view) {
     case core::DebugView::Steps:
       return HeatmapLegend{QStringLiteral("height samples per pixel"),
-                           double(maxSamplesPerPixel(material))};
+                           double(maxSamplesPerPixel(material)), QColor(), QString()};
     case core::DebugView::Mip:
-      return HeatmapLegend{QStringLiteral("height map mip level"), kMipDisplayLevels};
-    case core::DebugView::Error:
-      return HeatmapLegend{QStringLiteral("UV error vs exact trace (texels)"), errorMaxTexels};
+      return HeatmapLegend{QStringLiteral("height map mip level"), kMipDisplayLevels, QColor(),
+                           QString()};
+    case core::DebugView::Error: {
+      const int grey = int(std::lround(core::kErrorMinifiedGrey * 255.0f));
+      return HeatmapLegend{QStringLiteral("UV error vs exact trace (texels)"), errorMaxTexels,
+                           QColor(grey, grey, grey),
+                           QStringLiteral("map minified (mip level %1 or more): not counted")
+                               .arg(double(core::kErrorMaxMipLevel))};
+    }
     default:
       return std::nullopt;
   }
@@ -56,12 +64,17 @@ void drawHeatmapLegend(QPainter& painter, const QRect& area, const HeatmapLegend
   painter.setFont(font);
   const int margin = font.pixelSize();
   const int textHeight = font.pixelSize() + 4;
-  const int titleWidth = QFontMetrics(font).horizontalAdvance(legend.title);
-  const int barWidth = std::max(std::clamp(area.width() / 4, 120, 260), titleWidth);
+  const QFontMetrics metrics(font);
   const int barHeight = font.pixelSize();
+  const bool hasNote = !legend.note.isEmpty();
+  const int noteWidth =
+      hasNote ? barHeight + margin / 2 + metrics.horizontalAdvance(legend.note) : 0;
+  const int barWidth = std::max(
+      {std::clamp(area.width() / 4, 120, 260), metrics.horizontalAdvance(legend.title), noteWidth});
+  const int noteHeight = hasNote ? textHeight : 0;
   const QRect box(area.right() - barWidth - 2 * margin,
-                  area.bottom() - barHeight - 2 * textHeight - 2 * margin, barWidth + 2 * margin,
-                  barHeight + 2 * textHeight + margin);
+                  area.bottom() - barHeight - 2 * textHeight - noteHeight - 2 * margin,
+                  barWidth + 2 * margin, barHeight + 2 * textHeight + noteHeight + margin);
   painter.fillRect(box, QColor(0, 0, 0, 170));
   const QRect bar(box.left() + margin, box.top() + textHeight + margin / 2, barWidth, barHeight);
   QLinearGradient gradient(bar.topLeft(), bar.topRight());
@@ -77,6 +90,12 @@ void drawHeatmapLegend(QPainter& painter, const QRect& area, const HeatmapLegend
   painter.drawText(labels, Qt::AlignLeft | Qt::AlignTop, QStringLiteral("0"));
   painter.drawText(labels, Qt::AlignHCenter | Qt::AlignTop, formatValue(legend.maximum / 2.0));
   painter.drawText(labels, Qt::AlignRight | Qt::AlignTop, formatValue(legend.maximum));
+  if (hasNote) {
+    const QRect swatch(bar.left(), labels.bottom() + 2, barHeight, barHeight);
+    painter.fillRect(swatch, legend.noteColor);
+    painter.drawText(QRect(swatch.right() + margin / 2, swatch.top() - 2, barWidth, textHeight),
+                     Qt::AlignLeft | Qt::AlignTop, legend.note);
+  }
   painter.restore();
 }
 

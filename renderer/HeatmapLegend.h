@@ -6,6 +6,7 @@
 #include "core/material/Material.h"
 #include "core/view/DebugView.h"
 
+#include <QColor>
 #include <QImage>
 #include <QString>
 
@@ -18,6 +19,10 @@ namespace relief::renderer {
 struct HeatmapLegend {
   QString title;
   double maximum = 1.0;  // the value shown in red; the ramp starts at 0
+  // A colour outside the ramp and what it means (the error view's minified pixels), drawn as a
+  // swatch and a line under the scale; no swatch when `note` is empty.
+  QColor noteColor;
+  QString note;
 };
 
 // The legend for a view, or nullopt for views that are not heat maps. `errorMaxTexels` is the

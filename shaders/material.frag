@@ -120,7 +120,9 @@ void main() {
 #elif DEBUG_VIEW == VIEW_NORMAL
   fragColor = vec4(surface.normal * 0.5 + 0.5, 1.0);
 #elif DEBUG_VIEW == VIEW_UV
-  fragColor = dataOutput(vec3(visible.uv, 0.0), vec3(fract(visible.uv), 0.0));
+  // Float output carries the height map's mip level in b: the error view leaves out the pixels
+  // where the map is minified (core/tracing/UvErrorMap.h).
+  fragColor = dataOutput(vec3(visible.uv, mipLevel), vec3(fract(visible.uv), 0.0));
 #elif DEBUG_VIEW == VIEW_OFFSET
   vec2 offsetTexels = (visible.uv - entryUv) * uHeightMapSize;
   fragColor = dataOutput(vec3(offsetTexels, 0.0),

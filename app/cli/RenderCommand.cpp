@@ -108,7 +108,9 @@ CliOptions renderOptions() {
   options.push_back({QStringLiteral("view"), QStringLiteral("name"),
                      QStringLiteral("What to render: ") +
                          enumNames(core::allDebugViews(), core::debugViewName) +
-                         QStringLiteral(". error prints the UV error against the exact trace."),
+                         QStringLiteral(". error prints the UV error against the exact trace, "
+                                        "leaving out pixels where the height map is minified "
+                                        "(mip level 1 or more; grey in the picture)."),
                      QStringLiteral("shading")});
   for (CliOption& option : lightingOptions())
     options.push_back(std::move(option));
@@ -215,14 +217,11 @@ core::Result<core::Image> renderErrorView(renderer::OffscreenRenderer& offscreen
                 QJsonObject{{QStringLiteral("mean"), map.mean},
                             {QStringLiteral("p95"), map.p95},
                             {QStringLiteral("max"), map.maximum},
-                            {QStringLiteral("pixels"), double(map.pixels)}});
+                            {QStringLiteral("pixels"), double(map.pixels)},
+                            {QStringLiteral("minifiedPixels"), double(map.minifiedPixels)}});
   if (!request.json) {
-    printOut(QStringLiteral("UV error against the exact trace: mean %1, 95th percentile %2, max "
-                            "%3 texels over %4 pixels\n")
-                 .arg(map.mean, 0, 'f', 4)
-                 .arg(map.p95, 0, 'f', 4)
-                 .arg(map.maximum, 0, 'f', 4)
-                 .arg(map.pixels));
+    printOut(QStringLiteral("UV error against the exact trace: %1\n")
+                 .arg(QString::fromStdString(core::describeUvError(map))));
   }
   if (request.exr)
     return map.texels;

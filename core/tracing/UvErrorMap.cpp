@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <vector>
 
@@ -28,13 +29,17 @@ UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const H
       [&](int y) {
         for (int x = 0; x < width; ++x) {
           float& out = result.texels.at(x, y, 0);
-          out = -1.0f;
+          out = kErrorNotCovered;
           if (cancel && cancel->load())
             continue;
           const float* uv = finalUv.pixel(x, y);
           const float* ray = eyeRays.pixel(x, y);
           if (uv[3] <= 0.0f)
             continue;
+          if (uv[2] >= kErrorMaxMipLevel) {
+            out = kErrorMinified;
+            continue;
+          }
           const double vx = ray[2], vy = ray[3];
           const double vz = std::sqrt(std::max(0.0, 1.0 - vx * vx - vy * vy));
           const ViewRayHit hit = traceViewRay(field, {ray[0], ray[1]}, {vx, vy, vz});
@@ -53,8 +58,11 @@ UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const H
   std::vector<float> covered;
   covered.reserve(result.texels.pixelCount());
   for (std::size_t i = 0; i < result.texels.valueCount(); ++i) {
-    if (result.texels.data()[i] >= 0.0f)
-      covered.push_back(result.texels.data()[i]);
+    const float error = result.texels.data()[i];
+    if (error >= 0.0f)
+      covered.push_back(error);
+    else if (error == kErrorMinified)
+      ++result.minifiedPixels;
   }
   result.pixels = static_cast<long long>(covered.size());
   if (!covered.empty()) {
@@ -67,15 +75,39 @@ UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const H
   return result;
 }
 
+std::string describeUvError(const UvErrorMap& map) {
+  char text[256];
+  if (map.pixels == 0 && map.minifiedPixels > 0) {
+    std::snprintf(text, sizeof text,
+                  "every pixel (%lld) reads the height map minified (mip level %g or more), "
+                  "where no technique can match the full-resolution trace: move closer",
+                  map.minifiedPixels, double(kErrorMaxMipLevel));
+    return text;
+  }
+  std::snprintf(text, sizeof text,
+                "mean %.3f, 95th percentile %.3f, max %.2f texels over %lld pixels", map.mean,
+                map.p95, map.maximum, map.pixels);
+  std::string summary = text;
+  if (map.minifiedPixels > 0) {
+    std::snprintf(text, sizeof text,
+                  "; %lld pixels where the height map is minified (mip level %g or more) left out",
+                  map.minifiedPixels, double(kErrorMaxMipLevel));
+    summary += text;
+  }
+  return summary;
+}
+
 Image colorizeErrorMap(const UvErrorMap& map, double maxTexels) {
   Image colors(map.texels.width(), map.texels.height(), 4, ColorSpace::Srgb);
   for (int y = 0; y < colors.height(); ++y) {
     for (int x = 0; x < colors.width(); ++x) {
       const float error = map.texels.at(x, y, 0);
       float* out = colors.pixel(x, y);
-      if (error < 0.0f)
-        continue;  // transparent: not covered
-      const glm::vec3 color = heatmapColor(float(error / std::max(maxTexels, 1e-9)));
+      if (error == kErrorNotCovered)
+        continue;  // transparent
+      const glm::vec3 color = error == kErrorMinified
+                                  ? glm::vec3(kErrorMinifiedGrey)
+                                  : heatmapColor(float(error / std::max(maxTexels, 1e-9)));
       out[0] = color.r;
       out[1] = color.g;
       out[2] = color.b;

@@ -3,6 +3,7 @@
 // when nothing changed.
 #include "core/image/ColorSpace.h"
 #include "core/image/ImageIO.h"
+#include "core/tracing/UvErrorMap.h"
 #include "renderer/ImageConversion.h"
 #include "support/DialogAnswerer.h"
 #include "support/ImageCompare.h"
@@ -26,6 +27,8 @@
 #include <QTest>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace relief::test {
 namespace {
@@ -332,6 +335,8 @@ TEST_F(ViewportControls, NothingRedrawsWhenNothingChanged) {
 
 TEST_F(ViewportControls, ErrorViewReportsTheErrorAgainstTheExactTrace) {
   m_window->resize(500, 400);
+  // Tiled a tenth of a time, the map is magnified in this small viewport: pixels are compared.
+  document()->setParameter(ParamId::Tiling, 0.1);
   QSignalSpy finished(viewport(), &ui::ViewportWidget::errorViewFinished);
   QComboBox* views = m_window->debugViewBox();
   const int error = views->findData(QStringLiteral("error"));
@@ -342,6 +347,27 @@ TEST_F(ViewportControls, ErrorViewReportsTheErrorAgainstTheExactTrace) {
   ASSERT_TRUE(viewport()->errorMap().has_value());
   EXPECT_GT(viewport()->errorMap()->pixels, 1000);
   EXPECT_GE(viewport()->errorMap()->mean, 0.0);
+  // The viewport shows the error map's colours. It once showed the colour map instead: Qt's
+  // painter drew its image on the texture unit the renderer had left active and sampled unit 0.
+  const core::Image frame = grabbed();
+  const core::Image expected =
+      core::colorizeErrorMap(*viewport()->errorMap(), core::kErrorDisplayTexels);
+  ASSERT_EQ(frame.width(), expected.width());
+  ASSERT_EQ(frame.height(), expected.height());
+  int compared = 0, matching = 0;
+  for (int y = frame.height() / 3; y < 2 * frame.height() / 3; y += 5) {
+    for (int x = 0; x < frame.width(); x += 5) {
+      if (expected.at(x, y, 3) < 1.0f)
+        continue;  // not covered: the background shows
+      ++compared;
+      bool same = true;
+      for (int c = 0; c < 3; ++c)
+        same = same && std::abs(frame.at(x, y, c) - expected.at(x, y, c)) <= 2.0f / 255.0f;
+      matching += same ? 1 : 0;
+    }
+  }
+  EXPECT_GT(compared, 100);
+  EXPECT_GT(matching, compared * 9 / 10) << matching << " of " << compared;
 }
 
 }  // namespace

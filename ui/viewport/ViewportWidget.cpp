@@ -394,6 +394,12 @@ void ViewportWidget::paintGL() {
   if (scale < 1.0f)
     m_restTimer->start();
   m_samplesTimer->start();  // every frame restarts the wait for the view to rest
+  // The renderer binds its maps to units 0 to 15 and leaves the last one active. Qt's OpenGL
+  // paint engine remembers the unit it last activated (0) instead of asking GL, so it would
+  // bind its own textures (an image, a gradient's colour table) to our active unit and sample
+  // unit 0, which holds the colour map: the error view showed the bricks' colour map instead
+  // of its heat map, and legends drew grey.
+  context()->functions()->glActiveTexture(GL_TEXTURE0);
   paintOverlays();
   Q_EMIT frameRendered(milliseconds, double(scale));
 }
@@ -437,7 +443,7 @@ void ViewportWidget::startErrorView(int pixelWidth, int pixelHeight) {
         m_errorImage = renderer::toDisplayImage(
             core::colorizeErrorMap(*m_errorMap, core::kErrorDisplayTexels));
         Q_EMIT errorViewProgress(0, 0);
-        Q_EMIT errorViewFinished(m_errorMap->mean, m_errorMap->p95, m_errorMap->maximum);
+        Q_EMIT errorViewFinished(QString::fromStdString(core::describeUvError(*m_errorMap)));
         update();
       });
 }
@@ -459,11 +465,10 @@ void ViewportWidget::paintOverlays() {
     }
     if (m_errorMap) {
       painter.setPen(Qt::white);
-      painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignTop | Qt::AlignLeft,
-                       tr("UV error against the exact trace: mean %1, 95%% %2, max %3 texels")
-                           .arg(m_errorMap->mean, 0, 'f', 3)
-                           .arg(m_errorMap->p95, 0, 'f', 3)
-                           .arg(m_errorMap->maximum, 0, 'f', 2));
+      painter.drawText(rect().adjusted(12, 12, -12, -12),
+                       Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap,
+                       tr("UV error against the exact trace: %1")
+                           .arg(QString::fromStdString(core::describeUvError(*m_errorMap))));
     }
   }
   if (legend)

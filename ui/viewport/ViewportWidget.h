@@ -131,8 +131,8 @@ class ViewportWidget : public QOpenGLWidget {
   void rendererReady(const QString& description);
   void renderError(const QString& message);
   void lightChanged();
-  void errorViewProgress(int done, int total);  // total 0: finished or cancelled
-  void errorViewFinished(double meanTexels, double p95Texels, double maxTexels);
+  void errorViewProgress(int done, int total);     // total 0: finished or cancelled
+  void errorViewFinished(const QString& summary);  // core::describeUvError's
   void compressedUploadChanged(const QString& summary);
   void meshSourceChanged(const QString& source);
   // A cone map is being built off the GUI thread (frames use the quadtree meanwhile), or not.

@@ -93,15 +93,9 @@ MainWindow::MainWindow(QWidget* parent)
       statusBar()->showMessage(tr("%1; lit by the uniform white environment instead").arg(message));
     }
   });
-  connect(m_viewport, &ViewportWidget::errorViewFinished, this,
-          [this](double mean, double p95, double maximum) {
-            statusBar()->showMessage(
-                tr("UV error against the exact trace: mean %1, 95th percentile %2, max %3 texels")
-                    .arg(mean, 0, 'f', 3)
-                    .arg(p95, 0, 'f', 3)
-                    .arg(maximum, 0, 'f', 2),
-                15000);
-          });
+  connect(m_viewport, &ViewportWidget::errorViewFinished, this, [this](const QString& summary) {
+    statusBar()->showMessage(tr("UV error against the exact trace: %1").arg(summary), 15000);
+  });
 
   m_frameTime->setToolTip(tr(
       "CPU time of the last frame, including waiting for the GPU. While you drag, frames are "
