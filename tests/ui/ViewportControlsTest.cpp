@@ -18,9 +18,12 @@
 #include "ui/window/MainWindow.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
@@ -204,6 +207,62 @@ TEST_F(ViewportControls, LightControlsMoveTheLight) {
   QTest::mouseMove(viewport(), centre + QPoint(60, 0));
   QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, centre + QPoint(60, 0));
   EXPECT_NE(light->azimuthSlider()->value(), azimuth);
+}
+
+// The light's elevation runs from the horizon to overhead, takes typed values, and goes below
+// the horizon only when asked (where the panel warns that the surface is unlit); Ctrl+drag in
+// the viewport stops at the horizon too.
+TEST_F(ViewportControls, LightElevationStaysAboveTheHorizonUnlessAsked) {
+  ui::LightPanel* light = m_window->lightPanel();
+  QDoubleSpinBox* elevation = light->elevationControl()->spinBox();
+  EXPECT_EQ(elevation->minimum(), 0.0);
+  EXPECT_EQ(elevation->maximum(), 90.0);
+  elevation->selectAll();
+  QTest::keyClicks(elevation, QStringLiteral("60"));
+  QTest::keyClick(elevation, Qt::Key_Return);
+  EXPECT_FLOAT_EQ(viewport()->view().light.elevationDeg, 60.0f);
+  EXPECT_EQ(light->elevationSlider()->value(), 60);  // the slider follows the typed value
+
+  const QPoint centre = viewport()->rect().center();
+  QTest::mousePress(viewport(), Qt::LeftButton, Qt::ControlModifier, centre);
+  QTest::mouseMove(viewport(), centre + QPoint(0, 150));
+  QTest::mouseMove(viewport(), centre + QPoint(0, 300));
+  QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, centre + QPoint(0, 300));
+  EXPECT_EQ(viewport()->view().light.elevationDeg, 0.0f) << "Ctrl+drag stops at the horizon";
+  EXPECT_FALSE(light->belowHorizonWarning()->isVisibleTo(light));
+
+  light->belowHorizonBox()->setChecked(true);
+  EXPECT_EQ(elevation->minimum(), -90.0);
+  elevation->setValue(-20.0);
+  EXPECT_FLOAT_EQ(viewport()->view().light.elevationDeg, -20.0f);
+  EXPECT_TRUE(light->belowHorizonWarning()->isVisibleTo(light));
+  light->belowHorizonBox()->setChecked(false);
+  EXPECT_EQ(viewport()->view().light.elevationDeg, 0.0f) << "back above the horizon";
+  EXPECT_FALSE(light->belowHorizonWarning()->isVisibleTo(light));
+}
+
+// Shift while dragging a parameter's slider moves it a tenth as fast: 100 pixels with Shift go
+// as far as 10 without.
+TEST_F(ViewportControls, ShiftDragMovesASliderATenthAsFast) {
+  auto* control = qobject_cast<ui::ParameterSlider*>(editor(ParamId::HeightScale));
+  ASSERT_NE(control, nullptr);
+  QSlider* slider = control->slider();
+  const int start = slider->value();
+  const double positionsPerPixel =
+      double(slider->maximum() - slider->minimum()) / double(slider->width());
+  slider->setSliderDown(true);
+  const auto shiftMove = [slider](int x) {
+    const QPointF at(x, slider->height() / 2);
+    QMouseEvent move(QEvent::MouseMove, at, slider->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                     Qt::ShiftModifier);
+    QApplication::sendEvent(slider, &move);
+  };
+  shiftMove(20);
+  shiftMove(120);
+  slider->setSliderDown(false);
+  const double expected = 100.0 * positionsPerPixel / ui::ParameterSlider::kFineDragFactor;
+  EXPECT_NEAR(slider->value() - start, expected, 1.0);
+  EXPECT_NEAR(document()->material().parameter(ParamId::HeightScale), control->value(), 1e-9);
 }
 
 // The environment controls: each built-in, the intensity, the rotation and the backgrounds

@@ -3,14 +3,17 @@
 
 #include "core/image/ColorSpace.h"
 #include "ui/panels/EnvironmentPanel.h"
+#include "ui/panels/ParameterSlider.h"
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/QtText.h"
 
+#include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -28,6 +31,26 @@ QColor toQColor(const glm::vec3& linear) {
   return QColor::fromRgbF(encode(linear.r), encode(linear.g), encode(linear.b));
 }
 
+// The light's direction as the controls offer it (whole degrees, typed or dragged).
+const core::OptionSpec& azimuthSpec() {
+  static const core::OptionSpec spec = core::integerOption(
+      "azimuth", "Azimuth", "degrees", 0, 359, 75,
+      "Direction the light comes from, around the vertical axis (0 = the +Z side). Ctrl+drag "
+      "in the viewport too; Shift+drag here for fine steps.");
+  return spec;
+}
+const core::OptionSpec& elevationSpec() {
+  static const core::OptionSpec spec = core::integerOption(
+      "elevation", "Elevation", "degrees", 0, 90, 35,
+      "Height of the light above the horizon (90 = overhead). Shift+drag for fine steps.");
+  return spec;
+}
+constexpr int kLowestElevation = -90;  // with "Below the horizon"
+
+QString tooltipOf(const core::OptionSpec& spec) {
+  return toQString(spec.description);
+}
+
 glm::vec3 toLinear(const QColor& color) {
   return glm::vec3(core::srgbToLinear(float(color.redF())),
                    core::srgbToLinear(float(color.greenF())),
@@ -39,8 +62,10 @@ glm::vec3 toLinear(const QColor& color) {
 LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
     : QWidget(parent),
       m_viewport(viewport),
-      m_azimuth(new QSlider(Qt::Horizontal)),
-      m_elevation(new QSlider(Qt::Horizontal)),
+      m_azimuth(new ParameterSlider(azimuthSpec())),
+      m_elevation(new ParameterSlider(elevationSpec())),
+      m_belowHorizon(new QCheckBox(tr("Below the horizon"))),
+      m_belowHorizonWarning(new QLabel),
       m_intensity(new QDoubleSpinBox),
       m_ambient(new QDoubleSpinBox),
       m_color(new QPushButton),
@@ -55,12 +80,18 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   environmentColumn->addWidget(m_environment);
   column->addWidget(environmentGroup);
   column->addStretch(1);
-  m_azimuth->setRange(0, 359);
-  m_azimuth->setToolTip(
-      tr("Direction the light comes from, around the vertical axis "
-         "(degrees; 0 = the +Z side). Ctrl+drag in the viewport too."));
-  m_elevation->setRange(-89, 89);
-  m_elevation->setToolTip(tr("Height of the light above the horizon (degrees; 90 = overhead)."));
+  m_azimuth->setToolTip(tooltipOf(azimuthSpec()));
+  m_azimuth->spinBox()->setSuffix(QStringLiteral("°"));
+  m_elevation->setToolTip(tooltipOf(elevationSpec()));
+  m_elevation->spinBox()->setSuffix(QStringLiteral("°"));
+  m_belowHorizon->setToolTip(
+      tr("Let the elevation go below 0: the light then comes from under the surface, which "
+         "leaves it unlit (and the self-shadow view black)."));
+  m_belowHorizonWarning->setWordWrap(true);
+  m_belowHorizonWarning->setText(
+      tr("The light is below the horizon: the surface is unlit and fully self-shadowed."));
+  m_belowHorizonWarning->setStyleSheet(QStringLiteral("color: #e0a040"));
+  m_belowHorizonWarning->hide();
   m_intensity->setRange(0.0, 8.0);
   m_intensity->setSingleStep(0.1);
   m_intensity->setToolTip(tr("Multiplier on the light colour (linear)."));
@@ -86,14 +117,17 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   m_color->setToolTip(tr("Colour of the light."));
   form->addRow(tr("Azimuth"), m_azimuth);
   form->addRow(tr("Elevation"), m_elevation);
+  form->addRow(QString(), m_belowHorizon);
+  form->addRow(m_belowHorizonWarning);
   form->addRow(tr("Colour"), m_color);
   form->addRow(tr("Intensity"), m_intensity);
   form->addRow(tr("Ambient"), m_ambient);
   form->addRow(tr("Exposure"), m_exposure);
   form->addRow(tr("Tone mapping"), m_toneMapper);
 
-  connect(m_azimuth, &QSlider::valueChanged, this, &LightPanel::applyToViewport);
-  connect(m_elevation, &QSlider::valueChanged, this, &LightPanel::applyToViewport);
+  connect(m_azimuth, &ParameterSlider::valueEdited, this, &LightPanel::applyToViewport);
+  connect(m_elevation, &ParameterSlider::valueEdited, this, &LightPanel::applyToViewport);
+  connect(m_belowHorizon, &QCheckBox::toggled, this, &LightPanel::allowBelowHorizon);
   connect(m_intensity, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
   connect(m_ambient, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
   connect(m_color, &QPushButton::clicked, this, &LightPanel::chooseColor);
@@ -110,13 +144,28 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   showLight();
 }
 
+QSlider* LightPanel::azimuthSlider() const {
+  return m_azimuth->slider();
+}
+
+QSlider* LightPanel::elevationSlider() const {
+  return m_elevation->slider();
+}
+
 void LightPanel::showLight() {
   const core::DirectionalLight& light = m_viewport->view().light;
-  const QSignalBlocker blockAzimuth(m_azimuth), blockElevation(m_elevation),
-      blockIntensity(m_intensity), blockAmbient(m_ambient), blockExposure(m_exposure),
-      blockToneMapper(m_toneMapper);
-  m_azimuth->setValue(int(std::lround(light.azimuthDeg)) % 360);
-  m_elevation->setValue(int(std::lround(light.elevationDeg)));
+  // A light a preset or the CLI put below the horizon is shown as it is.
+  if (light.elevationDeg < -0.5f && !m_belowHorizon->isChecked()) {
+    const QSignalBlocker block(m_belowHorizon);
+    m_belowHorizon->setChecked(true);
+    m_elevation->setRange(kLowestElevation, elevationSpec().maximum);
+    m_viewport->setLightBelowHorizonAllowed(true);
+  }
+  m_belowHorizonWarning->setVisible(light.elevationDeg < 0.0f);
+  const QSignalBlocker blockIntensity(m_intensity), blockAmbient(m_ambient),
+      blockExposure(m_exposure), blockToneMapper(m_toneMapper);
+  m_azimuth->setValue(double((int(std::lround(light.azimuthDeg)) % 360 + 360) % 360));
+  m_elevation->setValue(double(std::lround(light.elevationDeg)));
   m_intensity->setValue(light.intensity);
   m_ambient->setValue(light.ambient);
   const core::DisplayTransform& display = m_viewport->view().display;
@@ -133,9 +182,18 @@ void LightPanel::applyToViewport() {
   core::DirectionalLight light = m_viewport->view().light;
   light.azimuthDeg = float(m_azimuth->value());
   light.elevationDeg = float(m_elevation->value());
+  m_belowHorizonWarning->setVisible(light.elevationDeg < 0.0f);
   light.intensity = float(m_intensity->value());
   light.ambient = float(m_ambient->value());
   m_viewport->setLight(light);
+}
+
+void LightPanel::allowBelowHorizon(bool allowed) {
+  m_elevation->setRange(allowed ? kLowestElevation : elevationSpec().minimum,
+                        elevationSpec().maximum);
+  m_viewport->setLightBelowHorizonAllowed(allowed);
+  if (!allowed && m_viewport->view().light.elevationDeg < 0.0f)
+    applyToViewport();  // the clamped elevation
 }
 
 void LightPanel::chooseColor() {

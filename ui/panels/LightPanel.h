@@ -1,14 +1,18 @@
 // LightPanel: the directional light's azimuth and elevation, colour, intensity and ambient, the
 // display's exposure and tone mapping, and the environment (EnvironmentPanel). Kept in step with
-// the viewport, where Ctrl+drag moves the same light.
+// the viewport, where Ctrl+drag moves the same light. The elevation stays between the horizon
+// and overhead unless "Below the horizon" is ticked (a light from below leaves the surface
+// unlit and the self-shadow view black, which is rarely what an artist wants by accident).
 #pragma once
 
 #include "ui/Forward.h"
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
 class QPushButton;
 class QSlider;
 
@@ -20,8 +24,12 @@ class LightPanel : public QWidget {
  public:
   explicit LightPanel(ViewportWidget* viewport, QWidget* parent = nullptr);
 
-  QSlider* azimuthSlider() const { return m_azimuth; }
-  QSlider* elevationSlider() const { return m_elevation; }
+  QSlider* azimuthSlider() const;
+  QSlider* elevationSlider() const;
+  ParameterSlider* azimuthControl() const { return m_azimuth; }
+  ParameterSlider* elevationControl() const { return m_elevation; }
+  QCheckBox* belowHorizonBox() const { return m_belowHorizon; }
+  QLabel* belowHorizonWarning() const { return m_belowHorizonWarning; }
   QDoubleSpinBox* intensityBox() const { return m_intensity; }
   QDoubleSpinBox* ambientBox() const { return m_ambient; }
   QPushButton* colorButton() const { return m_color; }
@@ -35,10 +43,13 @@ class LightPanel : public QWidget {
  private:
   void applyToViewport();
   void chooseColor();
+  void allowBelowHorizon(bool allowed);
 
   ViewportWidget* m_viewport;
-  QSlider* m_azimuth;
-  QSlider* m_elevation;
+  ParameterSlider* m_azimuth;
+  ParameterSlider* m_elevation;
+  QCheckBox* m_belowHorizon;
+  QLabel* m_belowHorizonWarning;
   QDoubleSpinBox* m_intensity;
   QDoubleSpinBox* m_ambient;
   QPushButton* m_color;

@@ -47,6 +47,15 @@ ParameterPanel::ParameterPanel(MaterialDocument* document, QWidget* parent)
     }
     QWidget* editor = createEditor(spec);
     m_editors[std::size_t(spec.id)] = editor;
+    if (auto* check = qobject_cast<QCheckBox*>(editor)) {
+      // A switch names itself across the row, so its long label ("Height in normal map
+      // alpha") does not widen the label column and squeeze every slider.
+      check->setText(toQString(spec.label));
+      check->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Fixed);  // clicks beside it miss
+      m_labels[std::size_t(spec.id)] = check;
+      group->addRow(check);
+      continue;
+    }
     auto* label = new QLabel(toQString(spec.label));
     label->setToolTip(editor->toolTip());
     m_labels[std::size_t(spec.id)] = label;

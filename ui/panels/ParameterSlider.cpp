@@ -3,6 +3,7 @@
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
+#include <QMouseEvent>
 #include <QSignalBlocker>
 #include <QSlider>
 
@@ -14,6 +15,8 @@ namespace relief::ui::inline panels {
 ParameterSlider::ParameterSlider(const core::OptionSpec& spec, QWidget* parent)
     : QWidget(parent),
       m_spec(spec),
+      m_minimum(spec.minimum),
+      m_maximum(spec.maximum),
       m_slider(new QSlider(Qt::Horizontal)),
       m_spinBox(new QDoubleSpinBox) {
   auto* layout = new QHBoxLayout(this);
@@ -30,6 +33,7 @@ ParameterSlider::ParameterSlider(const core::OptionSpec& spec, QWidget* parent)
   m_spinBox->setMinimumWidth(72);
   m_spinBox->setAlignment(Qt::AlignRight);
 
+  m_slider->installEventFilter(this);
   connect(m_slider, &QSlider::sliderPressed, this, &ParameterSlider::dragStarted);
   connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
     const double value = fromSlider(position);
@@ -60,11 +64,49 @@ void ParameterSlider::setValue(double value) {
   m_slider->setValue(toSlider(value));
 }
 
+void ParameterSlider::setRange(double minimum, double maximum) {
+  const double value = std::clamp(this->value(), minimum, maximum);
+  m_minimum = minimum;
+  m_maximum = maximum;
+  if (m_spec.kind == core::ParamKind::Int) {
+    const QSignalBlocker block(m_slider);
+    m_slider->setRange(0, int(maximum - minimum));
+  }
+  {
+    const QSignalBlocker block(m_spinBox);
+    m_spinBox->setRange(minimum, maximum);
+  }
+  setValue(value);
+}
+
+bool ParameterSlider::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == m_slider && event->type() == QEvent::MouseButtonPress)
+    m_fineDrag = false;
+  if (watched != m_slider || event->type() != QEvent::MouseMove || !m_slider->isSliderDown())
+    return QWidget::eventFilter(watched, event);
+  const auto* mouse = static_cast<QMouseEvent*>(event);
+  if (!(mouse->modifiers() & Qt::ShiftModifier)) {
+    m_fineDrag = false;  // the slider follows the mouse again
+    return false;
+  }
+  const double x = mouse->position().x();
+  if (!m_fineDrag) {
+    m_fineDrag = true;
+    m_fineAnchorX = x;
+    m_fineAnchorPosition = m_slider->sliderPosition();
+  }
+  const double positionsPerPixel =
+      double(m_slider->maximum() - m_slider->minimum()) / double(std::max(m_slider->width(), 1));
+  m_slider->setSliderPosition(
+      m_fineAnchorPosition +
+      int(std::lround((x - m_fineAnchorX) * positionsPerPixel / kFineDragFactor)));
+  return true;  // the slider does not jump to the mouse
+}
+
 int ParameterSlider::toSlider(double value) const {
-  double t = (value - m_spec.minimum) / (m_spec.maximum - m_spec.minimum);
+  double t = (value - m_minimum) / (m_maximum - m_minimum);
   if (isLogarithmic()) {
-    t = std::log(std::max(value, m_spec.minimum) / m_spec.minimum) /
-        std::log(m_spec.maximum / m_spec.minimum);
+    t = std::log(std::max(value, m_minimum) / m_minimum) / std::log(m_maximum / m_minimum);
   }
   return int(std::lround(t * m_slider->maximum()));
 }
@@ -72,15 +114,13 @@ int ParameterSlider::toSlider(double value) const {
 bool ParameterSlider::isLogarithmic() const {
   // Ranges over two decades (strength 0.01..200, shininess 1..256) need the slider's travel
   // spread evenly over the ratio, or the useful values sit in its first pixels.
-  return m_spec.kind == core::ParamKind::Float && m_spec.minimum > 0.0 &&
-         m_spec.maximum / m_spec.minimum >= 100.0;
+  return m_spec.kind == core::ParamKind::Float && m_minimum > 0.0 && m_maximum / m_minimum >= 100.0;
 }
 
 double ParameterSlider::fromSlider(int position) const {
   const double t = double(position) / double(m_slider->maximum());
-  const double value = isLogarithmic()
-                           ? m_spec.minimum * std::pow(m_spec.maximum / m_spec.minimum, t)
-                           : m_spec.minimum + t * (m_spec.maximum - m_spec.minimum);
+  const double value = isLogarithmic() ? m_minimum * std::pow(m_maximum / m_minimum, t)
+                                       : m_minimum + t * (m_maximum - m_minimum);
   // Round to what the spin box shows so the slider never produces hidden digits.
   const double scale = std::pow(10.0, m_spec.decimals);
   return std::round(value * scale) / scale;

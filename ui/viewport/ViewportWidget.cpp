@@ -537,8 +537,8 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     case DragMode::Light: {
       core::DirectionalLight& light = m_frame.view.light;
       light.azimuthDeg = std::fmod(light.azimuthDeg - dx * kOrbitDegreesPerPixel + 360.0f, 360.0f);
-      light.elevationDeg =
-          std::clamp(light.elevationDeg - dy * kOrbitDegreesPerPixel, -89.0f, 89.0f);
+      light.elevationDeg = std::clamp(light.elevationDeg - dy * kOrbitDegreesPerPixel,
+                                      m_lightBelowHorizon ? -90.0f : 0.0f, 90.0f);
       Q_EMIT lightChanged();
       break;
     }

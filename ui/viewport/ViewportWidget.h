@@ -43,6 +43,9 @@ class ViewportWidget : public QOpenGLWidget {
   const renderer::RenderView& view() const { return m_frame.view; }
   void setView(const renderer::RenderView& view);
   void setLight(const core::DirectionalLight& light);  // emits lightChanged
+  // Whether Ctrl+drag may take the light below the horizon (the Light panel's choice); by
+  // default it stops at the horizon.
+  void setLightBelowHorizonAllowed(bool allowed) { m_lightBelowHorizon = allowed; }
   // Exposure and tone mapping of the shaded view; emits lightChanged (the Light panel shows it).
   void setDisplayTransform(const core::DisplayTransform& display);
   // pbr shading's image-based light and the background; emits lightChanged. A file source
@@ -171,6 +174,7 @@ class ViewportWidget : public QOpenGLWidget {
   QString m_uploadSummary;
   QString m_environmentProblem;  // the renderer's environmentError() last reported
   bool m_nativeCompressed = true;
+  bool m_lightBelowHorizon = false;
   renderer::FrameSettings m_frame;
   float m_dividerFraction = 0.5f;
   core::Mesh m_mesh;
