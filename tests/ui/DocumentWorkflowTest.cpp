@@ -278,6 +278,12 @@ TEST_F(DocumentWorkflow, ExportDialogWritesAGodotMaterial) {
   EXPECT_EQ(ok.answered(), 1);
   EXPECT_TRUE(std::filesystem::exists(folder + "/bricks.tres"));
   EXPECT_EQ(dialog.writtenPath().toStdString(), folder + "/bricks.tres");
+  // The next export offers the same target (and would the next run: QSettings).
+  const QString godot = dialog.kindBox()->currentText();
+  ui::ExportDialog again(document()->toPreset(core::ViewState{}), m_window->viewport()->mesh(),
+                         m_window.get());
+  EXPECT_EQ(again.kindBox()->currentIndex(), 2);
+  EXPECT_EQ(again.kindBox()->currentText(), godot);
 }
 
 // Cancel stops a running export without closing the dialog: no preset is written (it is the

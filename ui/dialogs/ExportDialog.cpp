@@ -99,6 +99,7 @@ ExportDialog::ExportDialog(core::Preset preset, core::Mesh mesh, QWidget* parent
   layout->addWidget(m_progress);
   layout->addWidget(buttons);
   connect(m_kind, &QComboBox::currentIndexChanged, this, &ExportDialog::updateForKind);
+  restoreChoices();
   updateForKind();
   m_kind->setFocus();
 }
@@ -120,6 +121,34 @@ void ExportDialog::updateForKind() {
   m_explanation->setText(toQString(kind.description));
 }
 
+// The last export's target and options: an artist exports to the same engine again and again.
+// The target is stored by its CLI name, the options by their values, so a reordered list keeps
+// them.
+void ExportDialog::restoreChoices() {
+  const QString kind = settings::dialogChoice(QStringLiteral("export/kind"));
+  for (const core::ExportKindInfo& info : core::allExportKinds()) {
+    if (toQString(info.name) == kind)
+      m_kind->setCurrentIndex(m_kind->findData(int(info.kind)));
+  }
+  const auto restore = [](QComboBox* box, const QString& key) {
+    bool ok = false;
+    const int value = settings::dialogChoice(key).toInt(&ok);
+    if (ok && box->findData(value) >= 0)
+      box->setCurrentIndex(box->findData(value));
+  };
+  restore(m_mapFormat, QStringLiteral("export/mapFormat"));
+  restore(m_textures, QStringLiteral("export/textures"));
+}
+
+void ExportDialog::saveChoices() const {
+  settings::setDialogChoice(QStringLiteral("export/kind"),
+                            toQString(core::exportKindInfo(currentKind()).name));
+  settings::setDialogChoice(QStringLiteral("export/mapFormat"),
+                            QString::number(m_mapFormat->currentData().toInt()));
+  settings::setDialogChoice(QStringLiteral("export/textures"),
+                            QString::number(m_textures->currentData().toInt()));
+}
+
 bool ExportDialog::startExport() {
   const QString folder = m_folder->text().trimmed();
   if (folder.isEmpty()) {
@@ -134,6 +163,7 @@ bool ExportDialog::startExport() {
   request.folder = folder.toStdString();
   request.package = {core::PackageMapFormat(m_mapFormat->currentData().toInt()),
                      core::PackageTextures(m_textures->currentData().toInt())};
+  saveChoices();
   m_export->setEnabled(false);
   m_progress->setVisible(true);
   m_explanation->setText(tr("Exporting…"));

@@ -44,6 +44,8 @@ class ExportDialog : public QDialog {
 
  private:
   void updateForKind();
+  void restoreChoices();
+  void saveChoices() const;
   void finishExport(core::Result<core::ExportResult>&& result, const QString& folder);
   core::ExportKind currentKind() const;
 

@@ -17,6 +17,7 @@ namespace {
 const QString kRecent = QStringLiteral("recentFiles");
 const QString kFolders = QStringLiteral("folders/");
 const QString kAnyFolder = QStringLiteral("folders/any");
+const QString kDialogs = QStringLiteral("dialogs/");
 
 }  // namespace
 
@@ -42,6 +43,14 @@ void removeRecentFile(const QString& path) {
   QStringList files = QSettings().value(kRecent).toStringList();
   files.removeAll(QFileInfo(path).absoluteFilePath());
   QSettings().setValue(kRecent, files);
+}
+
+QString dialogChoice(const QString& key) {
+  return QSettings().value(kDialogs + key).toString();
+}
+
+void setDialogChoice(const QString& key, const QString& value) {
+  QSettings().setValue(kDialogs + key, value);
 }
 
 QString lastFolder(const QString& purpose, bool orAny) {

@@ -25,6 +25,11 @@ void removeRecentFile(const QString& path);
 QString lastFolder(const QString& purpose, bool orAny = true);
 void setLastFolder(const QString& purpose, const QString& folder);
 
+// A dialog's last choice for one of its controls ("export/kind", ...): the text it was saved as,
+// or empty.
+QString dialogChoice(const QString& key);
+void setDialogChoice(const QString& key, const QString& value);
+
 // Preferences (the Preferences dialog).
 int autosaveMinutes();  // 0: off. Default 2.
 void setAutosaveMinutes(int minutes);
