@@ -30,6 +30,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace relief::test {
@@ -110,6 +111,21 @@ TEST_F(MainWindowTest, StatusBarShowsHeightSamplesPerPixelOnceTheViewRests) {
   const double before = shownMean();
   QTRY_VERIFY_WITH_TIMEOUT(shownMean() > before + 1.0, 10000);
   EXPECT_LE(shownMean(), 33.0);
+}
+
+// The status bar leaves room for messages (the GPU's name alone, its whole description in the
+// tooltip), and a message about one material does not stay when another is opened.
+TEST_F(MainWindowTest, StatusBarMessagesHaveRoomAndGoWithTheirMaterial) {
+  const QList<QLabel*> labels = m_window->statusBar()->findChildren<QLabel*>();
+  const auto gpu = std::find_if(labels.begin(), labels.end(), [](const QLabel* label) {
+    return label->toolTip().contains(QStringLiteral("OpenGL"));
+  });
+  ASSERT_NE(gpu, labels.end()) << "no label carries the renderer's description";
+  EXPECT_FALSE((*gpu)->text().contains(QStringLiteral("OpenGL"))) << (*gpu)->text().toStdString();
+  EXPECT_FALSE((*gpu)->text().isEmpty());
+  m_window->statusBar()->showMessage(QStringLiteral("about the bricks"));
+  document()->reset(core::Material{}, QString());
+  EXPECT_TRUE(m_window->statusBar()->currentMessage().isEmpty());
 }
 
 TEST_F(MainWindowTest, CheckBoxParameterChangesTheFrame) {

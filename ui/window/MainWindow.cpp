@@ -122,8 +122,14 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::showFrameTime);
   connect(m_viewport, &ViewportWidget::samplesMeasured, this,
           [this](double mean) { m_samples->setText(tr("%1 samples/px").arg(mean, 0, 'f', 1)); });
-  connect(m_viewport, &ViewportWidget::rendererReady, this,
-          [this](const QString& description) { m_rendererLabel->setText(description); });
+  // The GPU's name alone ("llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa
+  // 22.3.6" took half the bar and cut off every message); the whole in the tooltip.
+  connect(m_viewport, &ViewportWidget::rendererReady, this, [this](const QString& description) {
+    m_rendererLabel->setText(description.section(QStringLiteral(" ("), 0, 0).section(',', 0, 0));
+    m_rendererLabel->setToolTip(description);
+  });
+  // Messages about the material that was open do not outlive it.
+  connect(m_document, &MaterialDocument::materialReset, statusBar(), &QStatusBar::clearMessage);
   connect(m_viewport, &ViewportWidget::renderError, this, [this](const QString& message) {
     QMessageBox::critical(this, tr("Relief: the viewport cannot render"), message);
   });
