@@ -209,6 +209,23 @@ TEST_F(ViewportControls, LightControlsMoveTheLight) {
   EXPECT_NE(light->azimuthSlider()->value(), azimuth);
 }
 
+// The heat-map legend is drawn in its colours in the viewport (it was once drawn grey there,
+// while the CLI's was coloured): its blue and red ends are found in the frame's corner.
+TEST_F(ViewportControls, HeatmapLegendIsDrawnInColour) {
+  viewport()->setDebugView(core::DebugView::Steps);
+  const core::Image frame = grabbed();
+  int red = 0, blue = 0;
+  for (int y = frame.height() * 4 / 5; y < frame.height(); ++y) {
+    for (int x = frame.width() / 2; x < frame.width(); ++x) {
+      const float r = frame.at(x, y, 0), g = frame.at(x, y, 1), b = frame.at(x, y, 2);
+      red += r > 0.7f && g < 0.35f && b < 0.35f ? 1 : 0;
+      blue += b > 0.5f && r < 0.2f && g < 0.3f ? 1 : 0;
+    }
+  }
+  EXPECT_GT(red, 20);
+  EXPECT_GT(blue, 20);
+}
+
 // The light's elevation runs from the horizon to overhead, takes typed values, and goes below
 // the horizon only when asked (where the panel warns that the surface is unlit); Ctrl+drag in
 // the viewport stops at the horizon too.
