@@ -28,4 +28,12 @@ struct FrameSettings {
   std::optional<SplitComparison> split;
 };
 
+// Progressive refinement of a reduced frame, as the viewport does once the input rests:
+// `bands` bands of `bandRows` full-resolution rows, from the top, drawn over the stretched
+// reduced frame (MaterialRenderer::renderRows and showRefined).
+struct FrameRefinement {
+  int bandRows = 0;
+  int bands = 0;
+};
+
 }  // namespace relief::renderer

@@ -179,6 +179,10 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
   glViewport(0, 0, width, height);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
+  if (m_rowWindow) {
+    glEnable(GL_SCISSOR_TEST);
+    scissor(0, 0, width, height);
+  }
   glDepthMask(GL_TRUE);
   glClearDepthf(1.0f);
   if (frame.output == FrameOutput::Display) {
@@ -207,9 +211,9 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
     if (!programB)
       return core::makeError(error);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, divider, height);
+    scissor(0, 0, divider, height);
     drawMaterial(*programA, materialA, frame, width, height);
-    glScissor(divider, 0, width - divider, height);
+    scissor(divider, 0, width - divider, height);
     drawMaterial(*programB, materialB, frame, width, height);
     glDisable(GL_SCISSOR_TEST);
   }
@@ -471,8 +475,55 @@ core::Status MaterialRenderer::renderReduced(const FrameSettings& frame, int wid
   return {};
 }
 
-core::Result<core::Image> MaterialRenderer::renderToImage(const FrameSettings& frame, int width,
-                                                          int height, float scale) {
+// A scissor box limited to renderRows' rows, when it is drawing.
+void MaterialRenderer::scissor(int x, int y, int width, int height) {
+  if (m_rowWindow) {
+    const int bottom = std::max(y, m_rowWindow->first);
+    const int top = std::min(y + height, m_rowWindow->second);
+    y = bottom;
+    height = std::max(top - bottom, 0);
+  }
+  glScissor(x, y, width, height);
+}
+
+core::Status MaterialRenderer::renderRows(const FrameSettings& frame, int width, int height,
+                                          int firstRow, int endRow) {
+  if (!m_refineTarget || m_refineTarget->size() != QSize(width, height)) {
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    format.setInternalTextureFormat(GL_RGBA8);  // as the window's and the reduced frame's
+    m_refineTarget = std::make_unique<QOpenGLFramebufferObject>(width, height, format);
+  }
+  if (!m_refineTarget->isValid()) {
+    m_refineTarget.reset();
+    return core::makeError("cannot create a " + std::to_string(width) + "x" +
+                           std::to_string(height) + " framebuffer (out of GPU memory?)");
+  }
+  m_rowWindow = std::pair(firstRow, endRow);
+  core::Status status = render(frame, width, height, m_refineTarget->handle());
+  m_rowWindow.reset();
+  glDisable(GL_SCISSOR_TEST);
+  return status;
+}
+
+void MaterialRenderer::showRefined(int width, int height, int refinedFrom, unsigned framebuffer) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  if (m_reducedTarget) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_reducedTarget->handle());
+    glBlitFramebuffer(0, 0, m_reducedTarget->width(), m_reducedTarget->height(), 0, 0, width,
+                      height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  }
+  if (m_refineTarget && m_refineTarget->size() == QSize(width, height) && refinedFrom < height) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_refineTarget->handle());
+    glBlitFramebuffer(0, refinedFrom, width, height, 0, refinedFrom, width, height,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+}
+
+core::Result<core::Image> MaterialRenderer::renderToImage(
+    const FrameSettings& frame, int width, int height, float scale,
+    std::optional<FrameRefinement> refinement) {
   const int limit = maxImageSize();
   if (width < 1 || height < 1 || width > limit || height > limit) {
     return core::makeError("cannot render " + std::to_string(width) + "x" + std::to_string(height) +
@@ -489,6 +540,16 @@ core::Result<core::Image> MaterialRenderer::renderToImage(const FrameSettings& f
   }
   if (core::Status status = renderReduced(frame, width, height, scale, fbo.handle()); !status) {
     return core::makeError(status.error());
+  }
+  if (refinement && scale < 1.0f) {
+    int refinedFrom = height;
+    for (int band = 0; band < refinement->bands && refinedFrom > 0; ++band) {
+      const int first = std::max(refinedFrom - refinement->bandRows, 0);
+      if (core::Status status = renderRows(frame, width, height, first, refinedFrom); !status)
+        return core::makeError(status.error());
+      refinedFrom = first;
+    }
+    showRefined(width, height, refinedFrom, fbo.handle());
   }
 
   core::Image image(width, height, 4, display ? core::ColorSpace::Srgb : core::ColorSpace::Linear);

@@ -21,6 +21,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -54,14 +55,24 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
                              unsigned framebuffer);
   // The pixel size renderReduced draws at for a scale (at least 1x1).
   static std::pair<int, int> reducedSize(int width, int height, float scale);
+  // Progressive refinement of a reduced frame: renderRows draws the GL rows [firstRow, endRow)
+  // (counted from the bottom) of the full frame into the renderer's own full-size framebuffer,
+  // leaving its other rows as they were; showRefined stretches the last reduced frame over
+  // `framebuffer` and copies the refined rows [refinedFrom, height) over it.
+  core::Status renderRows(const FrameSettings& frame, int width, int height, int firstRow,
+                          int endRow);
+  void showRefined(int width, int height, int refinedFrom, unsigned framebuffer);
   // The step between the height map's stored levels in normalised height (1/255 for an 8-bit
   // file, 1/65535 for 16 bits), 0 for float or unknown: where self-shadow rays start above.
   static float heightQuantum(const core::Image* height);
 
   // Renders into an offscreen framebuffer and reads it back: RGBA8 sRGB for Display output,
-  // RGBA32F for data. Rows top first. A `scale` below 1 draws as renderReduced does.
+  // RGBA32F for data. Rows top first. A `scale` below 1 draws as renderReduced does; with
+  // `refinement` too, that reduced frame is then refined as the viewport does once the input
+  // rests (renderRows, showRefined).
   core::Result<core::Image> renderToImage(const FrameSettings& frame, int width, int height,
-                                          float scale = 1.0f);
+                                          float scale = 1.0f,
+                                          std::optional<FrameRefinement> refinement = {});
   // Times renders of `frame` into a framebuffer of the size, each drawn and finished
   // (glFinish) on the CPU clock, after one untimed frame (compiling, uploading): at least
   // `timing.minFrames` and, up to `timing.maxFrames`, until `timing.minSeconds` have passed.
@@ -125,6 +136,10 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   unsigned m_emptyVao = 0;  // core profile needs a bound VAO even for attribute-less draws
   // renderReduced's target, kept while its size stays the same (interactive frames come in runs).
   std::unique_ptr<QOpenGLFramebufferObject> m_reducedTarget;
+  // renderRows' full-size target and the rows render() is limited to meanwhile (none: all).
+  std::unique_ptr<QOpenGLFramebufferObject> m_refineTarget;
+  std::optional<std::pair<int, int>> m_rowWindow;
+  void scissor(int x, int y, int width, int height);
   std::unique_ptr<QOpenGLTexture> m_splitSumTable;
 };
 

@@ -65,10 +65,11 @@ void OffscreenRenderer::setNativeCompressedUploads(bool native) {
 }
 
 core::Result<core::Image> OffscreenRenderer::render(const FrameSettings& frame, int width,
-                                                    int height, float scale) {
+                                                    int height, float scale,
+                                                    std::optional<FrameRefinement> refinement) {
   if (!makeCurrent())
     return core::makeError("cannot make the offscreen OpenGL context current");
-  return m_renderer->renderToImage(frame, width, height, scale);
+  return m_renderer->renderToImage(frame, width, height, scale, refinement);
 }
 
 core::Result<core::Image> OffscreenRenderer::render(const RenderView& view, int width, int height) {

@@ -13,6 +13,7 @@
 #include "renderer/SampleCount.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QOpenGLContext;
@@ -46,7 +47,8 @@ class OffscreenRenderer {
   // the same frame), RGBA32F for data outputs. A `scale` below 1 draws the frame smaller and
   // stretches it, as the viewport does while the user drags (MaterialRenderer::renderReduced).
   core::Result<core::Image> render(const FrameSettings& frame, int width, int height,
-                                   float scale = 1.0f);
+                                   float scale = 1.0f,
+                                   std::optional<FrameRefinement> refinement = {});
   // The shaded material (Display output, no debug view).
   core::Result<core::Image> render(const RenderView& view, int width, int height);
   // Timed frames of `frame` (MaterialRenderer::timeFrames).

@@ -56,6 +56,41 @@ TEST_F(OffscreenRender, SameInputsGiveTheSamePixels) {
   EXPECT_EQ(compareImages(first.value(), second.value()).maxError, 0.0);
 }
 
+// Progressive refinement (the viewport once the input rests after reduced frames): the full
+// frame drawn in bands of rows over the stretched reduced frame. Refined rows are the full
+// frame's bits; rows not yet refined still show the reduced frame; every band drawn gives the
+// full frame exactly, whatever the band height.
+TEST_F(OffscreenRender, RefiningAReducedFrameInBandsGivesTheFullFrame) {
+  offscreen().setMesh(core::makeSphere());
+  core::Material material;
+  material.setTechnique(core::Technique::Pom);
+  offscreen().setMaterial(material);
+  renderer::FrameSettings frame;
+  frame.view.camera.frame(core::makeSphere().bounds(), 1.5f);
+  constexpr int kWidth = 120, kHeight = 80;
+  core::Result<core::Image> full = offscreen().render(frame, kWidth, kHeight);
+  core::Result<core::Image> reduced = offscreen().render(frame, kWidth, kHeight, 0.25f);
+  // Bands of 30 rows: three of them cover the 80 rows (the last one 20).
+  core::Result<core::Image> refined =
+      offscreen().render(frame, kWidth, kHeight, 0.25f, renderer::FrameRefinement{30, 3});
+  core::Result<core::Image> half =
+      offscreen().render(frame, kWidth, kHeight, 0.25f, renderer::FrameRefinement{40, 1});
+  ASSERT_TRUE(full.ok() && reduced.ok() && refined.ok() && half.ok());
+  EXPECT_EQ(compareImages(refined.value(), full.value()).maxError, 0.0);
+  ASSERT_GT(compareImages(reduced.value(), full.value()).maxError, 8.0 / 255.0);
+  double topError = 0.0, bottomError = 0.0;
+  for (int y = 0; y < kHeight; ++y) {
+    const core::Image& expected = y < kHeight / 2 ? full.value() : reduced.value();
+    double& worst = y < kHeight / 2 ? topError : bottomError;
+    for (int x = 0; x < kWidth; ++x) {
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, double(std::abs(half->at(x, y, c) - expected.at(x, y, c))));
+    }
+  }
+  EXPECT_EQ(topError, 0.0) << "the refined top half is the full frame";
+  EXPECT_EQ(bottomError, 0.0) << "the rest still shows the reduced frame";
+}
+
 // An interactive frame (MaterialRenderer::renderReduced) is the frame drawn at the reduced size,
 // then stretched with bilinear filtering: each stretched pixel is the bilinear interpolation of
 // the small frame at its centre, (x + 0.5) / 2 - 0.5 in the small frame's texels at scale 1/2.

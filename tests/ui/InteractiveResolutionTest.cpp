@@ -135,6 +135,12 @@ TEST_F(InteractiveResolution, DraggingASliderDrawsReducedFramesThenAFullOneWhenT
   EXPECT_TRUE(QTest::qWaitFor([&] { return viewport()->lastFrameScale() == 1.0f; }, 10000));
   ASSERT_GE(frames.count(), 1);
   EXPECT_EQ(frames.last().at(1).toDouble(), 1.0);
+  // It came in bands over the stretched reduced frame: a budget no frame meets gives each band
+  // the fewest rows, a kMaxBands-th of the height, so the full frame took kMaxBands frames, each
+  // shown (and each a chance to serve input) before the last reported full resolution.
+  EXPECT_EQ(frames.count(), ui::ViewportWidget::kMaxBands);
+  for (int band = 0; band + 1 < frames.count(); ++band)
+    EXPECT_LT(frames.at(band).at(1).toDouble(), 1.0) << "band " << band;
   EXPECT_EQ(viewport()->lastFrameScale(), 1.0f);
   EXPECT_FALSE(status->text().contains(QStringLiteral("resolution")))
       << status->text().toStdString();

@@ -28,4 +28,12 @@ float AdaptiveResolution::nextInteractiveScale(double fullPixels) {
   return m_scale;
 }
 
+int AdaptiveResolution::rowsWithinBudget(int width, int height, int maxBands) const {
+  const int fewest = (height + maxBands - 1) / std::max(maxBands, 1);
+  if (m_msPerPixel <= 0.0)
+    return height;
+  const double rows = m_budgetMs / (m_msPerPixel * double(std::max(width, 1)));
+  return std::clamp(int(rows), std::max(fewest, 1), std::max(height, 1));
+}
+
 }  // namespace relief::ui::inline viewport

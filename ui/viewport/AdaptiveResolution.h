@@ -30,6 +30,10 @@ class AdaptiveResolution {
   float nextInteractiveScale(double fullPixels);
   // A full-resolution frame was shown (the input rested): the next drag starts afresh.
   void resetScale() { m_scale = 1.0f; }
+  // How many full-resolution rows of `width` pixels one frame may draw within the budget, for
+  // refining a reduced frame in bands: at least height / maxBands (so a refinement ends within
+  // maxBands frames however slow the GL), at most `height` (nothing measured yet: all at once).
+  int rowsWithinBudget(int width, int height, int maxBands) const;
 
  private:
   double m_budgetMs = kDefaultBudgetMs;

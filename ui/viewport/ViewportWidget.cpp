@@ -90,6 +90,9 @@ ViewportWidget::~ViewportWidget() {
 void ViewportWidget::changed() {
   m_errorStale = true;
   m_rested = false;
+  // The reduced frame on screen shows the state before this change: never refine over it.
+  m_reducedShown = false;
+  m_refinedFrom = -1;
   if (m_restTimer->isActive())
     m_restTimer->start();  // kRestMs after the last change
   update();
@@ -364,9 +367,28 @@ void ViewportWidget::paintGL() {
                           : 1.0f;
   if (scale >= 1.0f)
     m_resolution.resetScale();
-  if (core::Status status = m_renderer->renderReduced(frame, pixelWidth, pixelHeight, scale,
-                                                      defaultFramebufferObject());
-      !status) {
+  // Once the input rests after reduced frames, the full frame is drawn in bands of rows, top
+  // first, each within the frame budget, over the stretched reduced frame: the picture sharpens
+  // band by band, and input is served between bands instead of waiting for a whole slow frame.
+  const bool refining = scale >= 1.0f && m_reducedShown;
+  core::Status status;
+  if (refining) {
+    if (m_refinedFrom < 0)
+      m_refinedFrom = pixelHeight;  // GL rows count from the bottom: none refined yet
+    const int first = std::max(
+        m_refinedFrom - m_resolution.rowsWithinBudget(pixelWidth, pixelHeight, kMaxBands), 0);
+    status = m_renderer->renderRows(frame, pixelWidth, pixelHeight, first, m_refinedFrom);
+    if (status) {
+      m_refinedFrom = first;
+      m_renderer->showRefined(pixelWidth, pixelHeight, first, defaultFramebufferObject());
+    }
+  } else {
+    status = m_renderer->renderReduced(frame, pixelWidth, pixelHeight, scale,
+                                       defaultFramebufferObject());
+  }
+  if (!status) {
+    m_reducedShown = false;
+    m_refinedFrom = -1;
     Q_EMIT renderError(QString::fromStdString(status.error()));
   }
   if (const QString problem = QString::fromStdString(m_renderer->environmentError());
@@ -385,13 +407,29 @@ void ViewportWidget::paintGL() {
   // draws on demand, so the stall never costs an animation frame.
   context()->functions()->glFinish();
   const double milliseconds = double(timer.nsecsElapsed()) / 1.0e6;
-  const auto [drawnWidth, drawnHeight] =
-      renderer::MaterialRenderer::reducedSize(pixelWidth, pixelHeight, scale);
-  m_resolution.recordFrame(milliseconds, double(drawnWidth) * double(drawnHeight));
-  m_lastFrameScale = scale;
+  // What the screen now shows: a reduced frame, a reduced frame being refined (reported at its
+  // scale until the last band), or a full frame.
+  float shownScale = scale;
+  if (refining) {
+    const bool done = m_refinedFrom <= 0;
+    shownScale = done ? 1.0f : m_lastFrameScale;
+    if (done) {
+      m_reducedShown = false;
+      m_refinedFrom = -1;
+    } else {
+      update();  // the next band
+    }
+  } else {
+    const auto [drawnWidth, drawnHeight] =
+        renderer::MaterialRenderer::reducedSize(pixelWidth, pixelHeight, scale);
+    m_resolution.recordFrame(milliseconds, double(drawnWidth) * double(drawnHeight));
+    m_reducedShown = status && scale < 1.0f;
+    m_refinedFrom = -1;
+  }
+  m_lastFrameScale = shownScale;
   // The rest is counted from the end of the reduced frame (and again from each later change):
   // a frame slower than kRestMs must not make the next change's frame a full one.
-  if (scale < 1.0f)
+  if (scale < 1.0f && !refining)
     m_restTimer->start();
   m_samplesTimer->start();  // every frame restarts the wait for the view to rest
   // The renderer binds its maps to units 0 to 15 and leaves the last one active. Qt's OpenGL
@@ -401,7 +439,7 @@ void ViewportWidget::paintGL() {
   // of its heat map, and legends drew grey.
   context()->functions()->glActiveTexture(GL_TEXTURE0);
   paintOverlays();
-  Q_EMIT frameRendered(milliseconds, double(scale));
+  Q_EMIT frameRendered(milliseconds, double(shownScale));
 }
 
 void ViewportWidget::measureSamples(int pixelWidth, int pixelHeight) {

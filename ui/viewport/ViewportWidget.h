@@ -119,14 +119,18 @@ class ViewportWidget : public QOpenGLWidget {
   static constexpr float kOrbitDegreesPerPixel = 0.4f;
   static constexpr int kDividerGrabPixels = 6;
   static constexpr int kSamplesDelayMs = 400;
-  // A reduced frame is followed by a full one once no change came for this long.
+  // A reduced frame is refined to the full one once no change came for this long: the full
+  // frame is drawn in bands of rows, each within the interactive frame budget, over the
+  // stretched reduced frame, and at most kMaxBands of them.
   static constexpr int kRestMs = 250;
+  static constexpr int kMaxBands = 8;
 
  public Q_SLOTS:
   void frameMesh();
 
  Q_SIGNALS:
-  // A frame was drawn in `milliseconds` at `scale` of the full resolution.
+  // A frame was drawn in `milliseconds` at `scale` of the full resolution (a band of a
+  // refinement reports the reduced frame's scale until the last band, which reports 1).
   void frameRendered(double milliseconds, double scale);
   // Height samples (texel fetches) per covered pixel, the mean, measured once the view has
   // rested (kSamplesDelayMs after the last frame) on a quarter-size steps view.
@@ -193,6 +197,10 @@ class ViewportWidget : public QOpenGLWidget {
   QTimer* m_restTimer;
   bool m_rested = true;  // no change since the rest timer last fired: draw at full resolution
   float m_lastFrameScale = 1.0f;
+  // Progressive refinement (paintGL): whether the frame on screen is a reduced frame of the
+  // current state, and the lowest GL row refined so far (-1: not refining).
+  bool m_reducedShown = false;
+  int m_refinedFrom = -1;
 
   // The error view: a CPU trace per frame, in the background.
   BackgroundTask* m_errorTask;  // the error view's exact trace
