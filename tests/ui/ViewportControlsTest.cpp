@@ -310,7 +310,7 @@ TEST_F(ViewportControls, EnvironmentControlsChangeThePbrFrame) {
   expectChange("studio");
   panel->intensityBox()->setValue(2.0);
   expectChange("intensity");
-  panel->rotationSlider()->setValue(90);
+  panel->rotationControl()->spinBox()->setValue(90);
   expectChange("rotation");
   for (int i = 0; i < panel->backgroundBox()->count(); ++i) {
     if (i == panel->backgroundBox()->currentIndex())

@@ -2,6 +2,7 @@
 #include "ui/compare/CompareDialog.h"
 
 #include "ui/compare/CompareView.h"
+#include "ui/panels/ParameterSlider.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -33,11 +34,15 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
   for (const char* name : {"Red", "Green", "Blue", "Alpha"})
     m_channel->addItem(tr(name), m_channel->count() - 1);
 
-  m_gain = new QSlider(Qt::Horizontal, this);
-  m_gain->setRange(1, 100);
-  m_gain->setValue(10);
-  m_gain->setMaximumWidth(160);
-  m_gainLabel = new QLabel(tr("x10"), this);
+  // The difference's gain: a slider with its value, typed or dragged (Shift: fine).
+  static const core::OptionSpec gainSpec =
+      core::integerOption("gain", "Gain", "times", 1, 100, 10,
+                          "How many times the difference is amplified in the difference mode.");
+  m_gain = new ParameterSlider(gainSpec, this);
+  m_gain->setMaximumWidth(240);
+  m_gain->spinBox()->setPrefix(QStringLiteral("x"));
+  m_gain->setToolTip(
+      QString::fromUtf8(gainSpec.description.data(), qsizetype(gainSpec.description.size())));
   m_threshold = new QSpinBox(this);
   m_threshold->setRange(0, 255);
   m_threshold->setValue(8);
@@ -61,7 +66,6 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
   controls->addWidget(m_channel);
   controls->addWidget(new QLabel(tr("Gain:"), this));
   controls->addWidget(m_gain);
-  controls->addWidget(m_gainLabel);
   controls->addWidget(new QLabel(tr("Threshold:"), this));
   controls->addWidget(m_threshold);
   controls->addStretch();
@@ -88,10 +92,8 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
     const int channel = m_channel->currentData().toInt();
     m_view->setChannel(channel < 0 ? std::nullopt : std::optional<int>(channel));
   });
-  connect(m_gain, &QSlider::valueChanged, this, [this](int gain) {
-    m_gainLabel->setText(tr("x%1").arg(gain));
-    m_view->setGain(gain);
-  });
+  connect(m_gain, &ParameterSlider::valueEdited, this,
+          [this](double gain) { m_view->setGain(gain); });
   connect(m_threshold, &QSpinBox::valueChanged, this,
           [this](int levels) { m_view->setThreshold(levels / 255.0); });
   connect(fit, &QPushButton::clicked, m_view, &CompareView::fitToView);
@@ -108,6 +110,10 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
     addAction(shortcut);
   }
   updateEnabled();
+}
+
+QSlider* CompareDialog::gainSlider() const {
+  return m_gain->slider();
 }
 
 void CompareDialog::setComparison(const QString& title, std::shared_ptr<const core::Image> original,

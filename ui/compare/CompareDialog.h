@@ -30,15 +30,15 @@ class CompareDialog : public QDialog {
   CompareView* view() const { return m_view; }
   QComboBox* modeBox() const { return m_mode; }
   QComboBox* channelBox() const { return m_channel; }
-  QSlider* gainSlider() const { return m_gain; }
+  QSlider* gainSlider() const;
+  ParameterSlider* gainControl() const { return m_gain; }
   QSpinBox* thresholdBox() const { return m_threshold; }
 
  private:
   CompareView* m_view;
   QComboBox* m_mode;
   QComboBox* m_channel;
-  QSlider* m_gain;
-  QLabel* m_gainLabel;
+  ParameterSlider* m_gain;
   QSpinBox* m_threshold;
   QLabel* m_zoomLabel;
   QLabel* m_metrics;

@@ -2,6 +2,7 @@
 #include "ui/panels/EnvironmentPanel.h"
 
 #include "core/shading/EnvironmentMaps.h"
+#include "ui/panels/ParameterSlider.h"
 #include "ui/tasks/BackgroundTask.h"
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/QtText.h"
@@ -11,11 +12,8 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
-#include <QHBoxLayout>
-#include <QLabel>
 #include <QMessageBox>
 #include <QSignalBlocker>
-#include <QSlider>
 
 #include <cmath>
 
@@ -25,6 +23,14 @@ namespace {
 // The source combo's last item opens the file dialog; its data is empty.
 const QString kChooseFileData;
 
+const core::OptionSpec& rotationSpec() {
+  static const core::OptionSpec spec =
+      core::integerOption("rotation", "Rotation", "degrees", -180, 180, 0,
+                          "Turns the environment about the vertical axis. Shift+drag for fine "
+                          "steps.");
+  return spec;
+}
+
 }  // namespace
 
 EnvironmentPanel::EnvironmentPanel(ViewportWidget* viewport, QWidget* parent)
@@ -33,8 +39,7 @@ EnvironmentPanel::EnvironmentPanel(ViewportWidget* viewport, QWidget* parent)
       m_loader(new BackgroundTask(this)),
       m_source(new QComboBox),
       m_intensity(new QDoubleSpinBox),
-      m_rotation(new QSlider(Qt::Horizontal)),
-      m_rotationLabel(new QLabel),
+      m_rotation(new ParameterSlider(rotationSpec())),
       m_background(new QComboBox) {
   auto* form = new QFormLayout(this);
   form->setContentsMargins(0, 0, 0, 0);
@@ -49,12 +54,8 @@ EnvironmentPanel::EnvironmentPanel(ViewportWidget* viewport, QWidget* parent)
   m_intensity->setRange(0.0, core::Environment::kMaxIntensity);
   m_intensity->setSingleStep(0.1);
   m_intensity->setToolTip(tr("Multiplier on the environment's radiance."));
-  m_rotation->setRange(-180, 180);
-  m_rotation->setToolTip(tr("Turns the environment about the vertical axis (degrees)."));
-  m_rotationLabel->setMinimumWidth(40);
-  auto* rotationRow = new QHBoxLayout;
-  rotationRow->addWidget(m_rotation, 1);
-  rotationRow->addWidget(m_rotationLabel);
+  m_rotation->setToolTip(toQString(rotationSpec().description));
+  m_rotation->spinBox()->setSuffix(QStringLiteral("°"));
   for (core::Background background : core::allBackgrounds()) {
     m_background->addItem(toQString(core::backgroundLabel(background)),
                           toQString(core::backgroundName(background)));
@@ -64,12 +65,12 @@ EnvironmentPanel::EnvironmentPanel(ViewportWidget* viewport, QWidget* parent)
          "environment, or the environment blurred as a rough surface reflects it."));
   form->addRow(tr("Environment"), m_source);
   form->addRow(tr("Intensity"), m_intensity);
-  form->addRow(tr("Rotation"), rotationRow);
+  form->addRow(tr("Rotation"), m_rotation);
   form->addRow(tr("Background"), m_background);
 
   connect(m_source, &QComboBox::activated, this, &EnvironmentPanel::sourceChosen);
   connect(m_intensity, &QDoubleSpinBox::valueChanged, this, &EnvironmentPanel::applyToViewport);
-  connect(m_rotation, &QSlider::valueChanged, this, &EnvironmentPanel::applyToViewport);
+  connect(m_rotation, &ParameterSlider::valueEdited, this, &EnvironmentPanel::applyToViewport);
   connect(m_background, &QComboBox::currentIndexChanged, this, &EnvironmentPanel::applyToViewport);
   connect(viewport, &ViewportWidget::lightChanged, this, &EnvironmentPanel::showEnvironment);
   showEnvironment();
@@ -80,7 +81,7 @@ EnvironmentPanel::~EnvironmentPanel() = default;
 void EnvironmentPanel::showEnvironment() {
   const core::Environment& environment = m_viewport->view().environment;
   const QSignalBlocker blockSource(m_source), blockIntensity(m_intensity),
-      blockRotation(m_rotation), blockBackground(m_background);
+      blockBackground(m_background);
   const QString source = QString::fromStdString(environment.source);
   int index = m_source->findData(source);
   if (index < 0)
@@ -88,8 +89,7 @@ void EnvironmentPanel::showEnvironment() {
   m_source->setCurrentIndex(index);
   m_shownIndex = index;
   m_intensity->setValue(environment.intensity);
-  m_rotation->setValue(int(std::lround(environment.rotationDeg)));
-  m_rotationLabel->setText(QStringLiteral("%1°").arg(m_rotation->value()));
+  m_rotation->setValue(double(std::lround(environment.rotationDeg)));
   m_background->setCurrentIndex(
       m_background->findData(toQString(core::backgroundName(environment.background))));
 }
@@ -98,7 +98,6 @@ void EnvironmentPanel::applyToViewport() {
   core::Environment environment = m_viewport->view().environment;
   environment.intensity = float(m_intensity->value());
   environment.rotationDeg = float(m_rotation->value());
-  m_rotationLabel->setText(QStringLiteral("%1°").arg(m_rotation->value()));
   environment.background =
       core::findBackground(m_background->currentData().toString().toStdString())
           .value_or(core::Background::Color);

@@ -9,8 +9,6 @@
 
 class QComboBox;
 class QDoubleSpinBox;
-class QLabel;
-class QSlider;
 
 namespace relief::ui::inline panels {
 
@@ -23,7 +21,7 @@ class EnvironmentPanel : public QWidget {
 
   QComboBox* sourceBox() const { return m_source; }
   QDoubleSpinBox* intensityBox() const { return m_intensity; }
-  QSlider* rotationSlider() const { return m_rotation; }
+  ParameterSlider* rotationControl() const { return m_rotation; }
   QComboBox* backgroundBox() const { return m_background; }
 
   // Reads `path` off the GUI thread and shows it when it is a usable environment; otherwise
@@ -48,8 +46,7 @@ class EnvironmentPanel : public QWidget {
   BackgroundTask* m_loader;
   QComboBox* m_source;
   QDoubleSpinBox* m_intensity;
-  QSlider* m_rotation;
-  QLabel* m_rotationLabel;
+  ParameterSlider* m_rotation;
   QComboBox* m_background;
   int m_shownIndex = 0;  // the source item shown, to go back to when a file is refused
 };
