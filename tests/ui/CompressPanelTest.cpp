@@ -13,10 +13,12 @@
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/MainWindow.h"
 
+#include <QApplication>
 #include <QChartView>
 #include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QScatterSeries>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
@@ -197,6 +199,24 @@ TEST_F(CompressPanelTest, TheCompareViewIsTexelExactAndShowsDifferences) {
   EXPECT_EQ(texelColour(1.0), expected(*outcome.job.map));
   EXPECT_EQ(texelColour(0.0), expected(*outcome.decoded));
 
+  // The read-out names the texel under the pointer and follows it when the picture moves under
+  // a still pointer (a zoom), and is cleared when the pointer leaves.
+  QSignalSpy hover(view, &ui::CompareView::hoverText);
+  const QPointF pointer = view->toWidget(QPointF(20.5, 30.5));
+  QTest::mouseMove(view, pointer.toPoint());
+  ASSERT_FALSE(hover.isEmpty());
+  EXPECT_TRUE(hover.last().front().toString().startsWith(QStringLiteral("texel 20, 30:")))
+      << hover.last().front().toString().toStdString();
+  view->setZoom(16.0, view->toWidget(QPointF(10.5, 10.5)));  // texel 10, 10 stays in place
+  const QPointF texel = view->toTexel(pointer);
+  EXPECT_TRUE(hover.last().front().toString().startsWith(
+      QStringLiteral("texel %1, %2:").arg(int(texel.x())).arg(int(texel.y()))))
+      << hover.last().front().toString().toStdString();
+  QEvent leave(QEvent::Leave);
+  QApplication::sendEvent(view, &leave);
+  EXPECT_TRUE(hover.last().front().toString().isEmpty());
+  view->setZoom(8.0, view->toWidget(QPointF(20.5, 30.5)));
+
   // Difference x100 and the thresholded view are different pictures from the wipe; the gain
   // slider is only enabled for the difference.
   dialog->modeBox()->setCurrentIndex(2);
@@ -216,11 +236,32 @@ TEST_F(CompressPanelTest, TheCompareViewIsTexelExactAndShowsDifferences) {
   dialog->close();
 }
 
+// The compare view's labels sit on a dark chip: over a white map (where white text alone would
+// vanish) a good part of the label's pixels are dark.
+TEST_F(CompressPanelTest, CompareViewLabelsAreReadableOverWhite) {
+  auto white = std::make_shared<core::Image>(64, 64, 3, core::ColorSpace::Srgb);
+  std::fill(white->data(), white->data() + white->valueCount(), 1.0f);
+  ui::CompareView view;
+  view.resize(400, 300);
+  view.setImages(white, white);
+  view.setZoom(40.0, QPointF(200, 150));  // the white map covers the whole view
+  for (const auto mode : {ui::CompareView::Mode::Wipe, ui::CompareView::Mode::Difference}) {
+    view.setMode(mode);
+    const QImage picture = view.picture();
+    int dark = 0, all = 0;
+    for (int y = 8; y < 26; ++y) {
+      for (int x = 8; x < 56; ++x, ++all)
+        dark += qGray(picture.pixel(x, y)) < 100 ? 1 : 0;
+    }
+    EXPECT_GT(dark, all / 3) << dark << " of " << all;
+  }
+}
+
 TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatBack) {
   ui::CompareAllDialog* dialog = panel()->compareAllDialog();
   QSignalSpy finished(dialog->runner(), &ui::CompressionRunner::finished);
-  dialog->start(MapSlot::Height, document()->material().map(MapSlot::Height).image,
-                core::CompressionQuality::Fast, 3, 0.03);
+  const auto& height = document()->material().map(MapSlot::Height).image;
+  dialog->start(MapSlot::Height, height, core::CompressionQuality::Fast, true, 3, 0.03);
   dialog->show();
   ASSERT_TRUE(finished.wait(240000));
   const std::size_t formats = core::formatsForSlot(MapSlot::Height).size();
@@ -238,8 +279,32 @@ TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatB
     EXPECT_EQ(outcome.report.size->zstdLevel, 3);
     EXPECT_GT(outcome.report.size->ktx2Bytes, 0u);
     EXPECT_LT(outcome.report.size->ktx2Bytes, outcome.report.size->bytes + 1024u);
+    // With mipmaps, as the panel counts them: the chain adds a third to level 0's blocks.
+    const double levelZero =
+        core::bitsPerPixel(outcome.job.settings.format) * height->width() * height->height() / 8.0;
+    EXPECT_GT(double(outcome.report.size->bytes), 1.3 * levelZero);
   }
-  EXPECT_TRUE(dialog->table()->horizontalHeaderItem(2)->text().contains(QStringLiteral("Zstd 3")));
+  const QString diskHeader = dialog->table()->horizontalHeaderItem(2)->text();
+  EXPECT_TRUE(diskHeader.contains(QStringLiteral("Zstd 3"))) << diskHeader.toStdString();
+  EXPECT_TRUE(diskHeader.contains(QStringLiteral("with mipmaps"))) << diskHeader.toStdString();
+  // No two shown point labels sit closer than a label's size (they printed over each other), and
+  // at least one is shown.
+  std::vector<QPointF> shown;
+  for (QAbstractSeries* series : dialog->chartView()->chart()->series()) {
+    auto* scatter = qobject_cast<QScatterSeries*>(series);
+    ASSERT_NE(scatter, nullptr);
+    if (scatter->pointLabelsVisible())
+      shown.push_back(dialog->chartView()->chart()->mapToPosition(scatter->at(0), scatter));
+  }
+  ASSERT_FALSE(shown.empty());
+  const QRectF plot = dialog->chartView()->chart()->plotArea();
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    for (std::size_t j = i + 1; j < shown.size(); ++j) {
+      EXPECT_TRUE(std::abs(shown[i].x() - shown[j].x()) >= 0.2 * plot.width() ||
+                  std::abs(shown[i].y() - shown[j].y()) >= 0.06 * plot.height())
+          << "labels " << i << " and " << j << " overlap";
+    }
+  }
   // Pick EAC R11 and use it.
   for (int row = 0; row < dialog->table()->rowCount(); ++row) {
     if (dialog->table()->item(row, 0)->data(Qt::UserRole).toInt() == int(TextureFormat::EacR11))

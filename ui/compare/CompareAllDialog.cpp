@@ -5,6 +5,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QCursor>
 #include <QDialogButtonBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -12,13 +13,22 @@
 #include <QPushButton>
 #include <QScatterSeries>
 #include <QTableWidget>
+#include <QToolTip>
 #include <QVBoxLayout>
 #include <QValueAxis>
 
+#include <algorithm>
 #include <cmath>
 
 namespace relief::ui::inline compare {
 namespace {
+
+// The chart's bits-per-texel axis runs 0..kChartBits. A point label ("bc7 (8.03 on disk)") is
+// about kLabelWidth of the plot's width and kLabelHeight of its height in the dialog's default
+// size; closer points than that would print their labels over each other.
+constexpr double kChartBits = 9.0;
+constexpr double kLabelWidth = 0.22;
+constexpr double kLabelHeight = 0.07;
 
 enum Column {
   FormatColumn,
@@ -60,6 +70,9 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setSelectionMode(QAbstractItemView::SingleSelection);
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  // Columns as wide as their header and values (the on-disk header says what it counts), the
+  // detail column takes the rest.
+  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   m_table->horizontalHeader()->setSectionResizeMode(DetailColumn, QHeaderView::Stretch);
   m_table->verticalHeader()->hide();
 
@@ -127,7 +140,8 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
 }
 
 void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
-                             core::CompressionQuality quality, int zstdLevel, double heightScale) {
+                             core::CompressionQuality quality, bool mipmaps, int zstdLevel,
+                             double heightScale) {
   m_slot = slot;
   m_texels = double(map->width()) * double(map->height());
   m_outcomes.clear();
@@ -138,11 +152,16 @@ void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Ima
                      .arg(map->width())
                      .arg(map->height())
                      .arg(toQString(core::compressionQualityName(quality))));
+  // The column says what it counts: mipmaps or not (as the panel's sizes), and Zstandard.
+  const QString mipText = mipmaps ? tr("with mipmaps") : tr("level 0 only");
   m_table->horizontalHeaderItem(DiskColumn)
-      ->setText(zstdLevel > 0 ? tr("On disk, Zstd %1").arg(zstdLevel) : tr("On disk"));
+      ->setText(zstdLevel > 0 ? tr("On disk (%1, Zstd %2)").arg(mipText).arg(zstdLevel)
+                              : tr("On disk (%1)").arg(mipText));
   m_table->horizontalHeaderItem(DiskColumn)
-      ->setToolTip(tr("What ships: the KTX2 file's bits per texel, header included%1")
-                       .arg(zstdLevel > 0 ? tr(", levels supercompressed with Zstandard") : ""));
+      ->setToolTip(
+          tr("What ships: the KTX2 file's bits per level-0 texel, header included, %1%2")
+              .arg(mipmaps ? tr("with the full mip chain (a third more)") : tr("level 0 alone"))
+              .arg(zstdLevel > 0 ? tr(", levels supercompressed with Zstandard") : ""));
   m_table->horizontalHeaderItem(QualityColumn)
       ->setText(slot == core::MapSlot::Normal ? tr("Mean angle (°)") : tr("PSNR (dB)"));
   m_table->horizontalHeaderItem(DetailColumn)
@@ -151,7 +170,7 @@ void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Ima
                                                 : tr("Max error"));
   std::vector<core::CompressionJob> jobs;
   for (core::TextureFormat format : core::formatsForSlot(slot))
-    jobs.push_back({map, slot, {format, quality, false, zstdLevel}, heightScale});
+    jobs.push_back({map, slot, {format, quality, mipmaps, zstdLevel}, heightScale});
   m_cancel->setEnabled(true);
   m_progress->setValue(0);
   updateChart();
@@ -231,36 +250,59 @@ void CompareAllDialog::updateChart() {
                          : tr("PSNR against bits per texel (higher is better)"));
   // One series per format, so each point carries its format's name as its label (Qt 6.4 has
   // no per-point label text).
-  std::vector<QScatterSeries*> series;
+  const auto quality = [normal](const core::CompressionOutcome& outcome) {
+    return normal ? outcome.report.normal->meanDegrees : std::min(outcome.report.image.psnr, 99.0);
+  };
   double low = 1e9, high = -1e9;
   for (const core::CompressionOutcome& outcome : m_outcomes) {
-    const double y =
-        normal ? outcome.report.normal->meanDegrees : std::min(outcome.report.image.psnr, 99.0);
+    low = std::min(low, quality(outcome));
+    high = std::max(high, quality(outcome));
+  }
+  const double yLow = high > low ? std::floor(low - 0.1 * (high - low)) : low - 1.0;
+  const double yHigh = high > low ? std::ceil(high + 0.1 * (high - low)) : high + 1.0;
+  std::vector<QScatterSeries*> series;
+  std::vector<QPointF> labelled;  // points whose label is shown, in axis fractions
+  for (const core::CompressionOutcome& outcome : m_outcomes) {
+    const QPointF at(outcome.report.size->bitsPerPixel, quality(outcome));
     auto* point = new QScatterSeries;
     point->setName(toQString(core::textureFormatInfo(outcome.job.settings.format).label));
     point->setMarkerSize(10.0);
-    point->setPointLabelsVisible(true);
-    point->setPointLabelsClipping(false);
     // The label says what ships too: the KTX2 file's bits per texel on disk.
-    point->setPointLabelsFormat(
+    const QString label =
         tr("%1 (%2 on disk)")
             .arg(toQString(core::textureFormatInfo(outcome.job.settings.format).name))
-            .arg(onDiskBitsPerTexel(outcome), 0, 'f', 2));
-    point->append(outcome.report.size->bitsPerPixel, y);
+            .arg(onDiskBitsPerTexel(outcome), 0, 'f', 2);
+    point->setPointLabelsFormat(label);
+    point->setPointLabelsClipping(false);
+    // Qt centres a point's label above it: two points closer than a label's size would print
+    // over each other (BC4 and EAC R11 of a height map sit at the same rate and nearly the same
+    // PSNR). The later one's label is left off; the legend and a tooltip still name it.
+    const QPointF fraction(at.x() / kChartBits, (at.y() - yLow) / std::max(yHigh - yLow, 1e-9));
+    const bool overlaps = std::any_of(labelled.begin(), labelled.end(), [&](QPointF other) {
+      return std::abs(other.x() - fraction.x()) < kLabelWidth &&
+             std::abs(other.y() - fraction.y()) < kLabelHeight;
+    });
+    point->setPointLabelsVisible(!overlaps);
+    if (!overlaps)
+      labelled.push_back(fraction);
+    connect(point, &QScatterSeries::hovered, this, [label](const QPointF&, bool entered) {
+      if (entered)
+        QToolTip::showText(QCursor::pos(), label);
+      else
+        QToolTip::hideText();
+    });
+    point->append(at);
     chart->addSeries(point);
     series.push_back(point);
-    low = std::min(low, y);
-    high = std::max(high, y);
   }
   auto* x = new QValueAxis;
   x->setTitleText(tr("bits per texel"));
-  x->setRange(0.0, 9.0);
+  x->setRange(0.0, kChartBits);
   x->setTickCount(10);
   x->setLabelFormat(QStringLiteral("%d"));
   auto* y = new QValueAxis;
   y->setTitleText(normal ? tr("mean angular error (°)") : tr("PSNR (dB)"));
-  if (high > low)
-    y->setRange(std::floor(low - 0.1 * (high - low)), std::ceil(high + 0.1 * (high - low)));
+  y->setRange(yLow, yHigh);
   chart->addAxis(x, Qt::AlignBottom);
   chart->addAxis(y, Qt::AlignLeft);
   for (QScatterSeries* point : series) {

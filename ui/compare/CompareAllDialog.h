@@ -29,9 +29,11 @@ class CompareAllDialog : public QDialog {
   explicit CompareAllDialog(QWidget* parent = nullptr);
 
   // Starts the comparison of `map` (in `slot`) at `quality`; the size on disk is that of a
-  // KTX2 file supercompressed at `zstdLevel` (0: none).
+  // KTX2 file with a full mip chain or level 0 alone (`mipmaps`, as the Compress panel's choice,
+  // so both count the same bytes), supercompressed at `zstdLevel` (0: none). Quality is
+  // measured on level 0.
   void start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
-             core::CompressionQuality quality, int zstdLevel, double heightScale);
+             core::CompressionQuality quality, bool mipmaps, int zstdLevel, double heightScale);
 
   QTableWidget* table() const { return m_table; }
   CompressionRunner* runner() const { return m_runner; }

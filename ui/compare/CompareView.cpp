@@ -41,6 +41,7 @@ void CompareView::setImages(std::shared_ptr<const core::Image> original,
   m_userMoved = false;
   rebuild();
   fitToView();
+  updateHover();
 }
 
 void CompareView::setMode(Mode mode) {
@@ -48,6 +49,7 @@ void CompareView::setMode(Mode mode) {
   rebuild();
   if (!m_userMoved)
     fitToView();  // side by side is twice as wide
+  updateHover();
 }
 
 void CompareView::setGain(double gain) {
@@ -104,6 +106,7 @@ void CompareView::setZoom(double zoom, QPointF anchor) {
   m_zoom = zoom;
   m_offset = anchor - texel * m_zoom;
   update();
+  updateHover();
   Q_EMIT zoomChanged(m_zoom);
 }
 
@@ -118,6 +121,7 @@ void CompareView::fitToView() {
   m_offset =
       QPointF((width() - contentWidth * m_zoom) / 2.0, (height() - m_left.height() * m_zoom) / 2.0);
   update();
+  updateHover();
   Q_EMIT zoomChanged(m_zoom);
 }
 
@@ -134,6 +138,20 @@ QImage CompareView::picture() {
   render(&image);
   return image;
 }
+
+namespace {
+
+// A label over the picture: white on a dark chip, readable over white texels as over black.
+void drawLabel(QPainter& painter, const QRectF& area, int alignment, const QString& text) {
+  const QRectF bounds = painter.boundingRect(area, alignment, text);
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(QColor(0, 0, 0, 200));
+  painter.drawRoundedRect(bounds.adjusted(-4, -2, 4, 2), 3, 3);
+  painter.setPen(Qt::white);
+  painter.drawText(area, alignment, text);
+}
+
+}  // namespace
 
 void CompareView::paintEvent(QPaintEvent*) {
   QPainter painter(this);
@@ -158,30 +176,29 @@ void CompareView::paintEvent(QPaintEvent*) {
       painter.restore();
       painter.setPen(QPen(QColor(255, 255, 255, 210), 2));
       painter.drawLine(x, 0, x, height());
-      painter.setPen(Qt::white);
-      painter.drawText(QRect(8, 8, std::max(0, x - 16), 20), Qt::AlignLeft, tr("Original"));
-      painter.drawText(QRect(x + 8, 8, std::max(0, width() - x - 16), 20), Qt::AlignRight,
-                       tr("Compressed"));
+      drawLabel(painter, QRect(8, 8, std::max(0, x - 16), 20), Qt::AlignLeft, tr("Original"));
+      drawLabel(painter, QRect(x + 8, 8, std::max(0, width() - x - 16), 20), Qt::AlignRight,
+                tr("Compressed"));
       break;
     }
     case Mode::SideBySide: {
       painter.drawImage(target, m_left);
       painter.drawImage(target.translated((m_left.width() + kSideGap) * m_zoom, 0), m_right);
-      painter.setPen(Qt::white);
-      painter.drawText(target.topLeft() + QPointF(4, -6), tr("Original"));
-      painter.drawText(target.topLeft() + QPointF((m_left.width() + kSideGap) * m_zoom + 4, -6),
-                       tr("Compressed"));
+      // Above each image when there is room, otherwise over its top edge.
+      const double top = std::max(target.top() - 24.0, 4.0);
+      drawLabel(painter, QRectF(target.left() + 4, top, 200, 20), Qt::AlignLeft, tr("Original"));
+      drawLabel(painter,
+                QRectF(target.left() + (m_left.width() + kSideGap) * m_zoom + 4, top, 200, 20),
+                Qt::AlignLeft, tr("Compressed"));
       break;
     }
     case Mode::Difference:
     case Mode::Threshold:
       painter.drawImage(target, m_difference);
-      painter.setPen(Qt::white);
-      painter.drawText(
-          rect().adjusted(8, 8, -8, -8), Qt::AlignTop | Qt::AlignLeft,
-          m_mode == Mode::Difference
-              ? tr("|original - compressed| x %1").arg(m_gain, 0, 'f', 0)
-              : tr("white: differs by more than %1/255").arg(m_threshold * 255.0, 0, 'f', 0));
+      drawLabel(painter, rect().adjusted(8, 8, -8, -8), Qt::AlignTop | Qt::AlignLeft,
+                m_mode == Mode::Difference
+                    ? tr("|original - compressed| x %1").arg(m_gain, 0, 'f', 0)
+                    : tr("white: differs by more than %1/255").arg(m_threshold * 255.0, 0, 'f', 0));
       break;
   }
 }
@@ -222,18 +239,30 @@ void CompareView::mouseMoveEvent(QMouseEvent* event) {
     setCursor(std::abs(pos.x() - dividerX()) <= kDividerGrab ? Qt::SplitHCursor : Qt::ArrowCursor);
   }
   m_last = pos;
-  if (m_original && m_compressed) {
-    QPointF texel = toTexel(pos);
+  m_pointer = pos;
+  updateHover();
+}
+
+void CompareView::leaveEvent(QEvent*) {
+  m_pointer.reset();
+  updateHover();
+}
+
+void CompareView::updateHover() {
+  QString text;
+  if (m_pointer && m_original && m_compressed) {
+    QPointF texel = toTexel(*m_pointer);
     if (m_mode == Mode::SideBySide && texel.x() >= m_original->width() + kSideGap)
       texel.rx() -= m_original->width() + kSideGap;
     const int x = int(std::floor(texel.x())), y = int(std::floor(texel.y()));
     if (x >= 0 && y >= 0 && x < m_original->width() && y < m_original->height()) {
-      Q_EMIT hoverText(tr("texel %1, %2: original %3, compressed %4")
-                           .arg(x)
-                           .arg(y)
-                           .arg(texelText(*m_original, x, y), texelText(*m_compressed, x, y)));
+      text = tr("texel %1, %2: original %3, compressed %4")
+                 .arg(x)
+                 .arg(y)
+                 .arg(texelText(*m_original, x, y), texelText(*m_compressed, x, y));
     }
   }
+  Q_EMIT hoverText(text);
 }
 
 void CompareView::mouseReleaseEvent(QMouseEvent*) {

@@ -62,10 +62,14 @@ class CompareView : public QWidget {
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
+  void leaveEvent(QEvent* event) override;
 
  private:
   void rebuild();  // the display images for the mode, gain, threshold and channel
   int dividerX() const;
+  // The read-out for the texel under the pointer, sent again whenever what is under it changes
+  // (a move, a zoom, a pan, new images); empty when the pointer is off the images.
+  void updateHover();
 
   std::shared_ptr<const core::Image> m_original, m_compressed;
   QImage m_left, m_right, m_difference;
@@ -79,6 +83,7 @@ class CompareView : public QWidget {
   bool m_userMoved = false;  // zoomed or panned since the last fit
   enum class Drag { None, Pan, Divider } m_drag = Drag::None;
   QPointF m_last;
+  std::optional<QPointF> m_pointer;  // over the widget, where
 };
 
 }  // namespace relief::ui::inline compare

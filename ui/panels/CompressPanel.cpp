@@ -433,7 +433,8 @@ void CompressPanel::openCompareAll() {
   const Row& row = m_rows[std::size_t(*slot)];
   CompareAllDialog* dialog = compareAllDialog();
   dialog->start(*slot, m_document->material().map(*slot).image,
-                core::CompressionQuality(row.quality->currentData().toInt()), m_zstd->value(),
+                core::CompressionQuality(row.quality->currentData().toInt()),
+                m_mipmaps->isChecked(), m_zstd->value(),
                 m_document->material().parameter(core::ParamId::HeightScale));
   dialog->show();
   dialog->raise();
