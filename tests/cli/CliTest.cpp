@@ -686,6 +686,7 @@ TEST(Cli, ReportingCommandsPrintOneJsonObject) {
   const QJsonObject error =
       object(runCli({QStringLiteral("render"), q(samplePreset("tiles")), QStringLiteral("--view"),
                      QStringLiteral("error"), QStringLiteral("--size"), QStringLiteral("96x64"),
+                     QStringLiteral("--set"), QStringLiteral("tiling=0.1"),  // magnified: compared
                      QStringLiteral("--out"), q(folder + "/e.png"), QStringLiteral("--json")}));
   const QJsonObject preset = object(runCli({QStringLiteral("preset"), QStringLiteral("validate"),
                                             q(samplePreset("tiles")), QStringLiteral("--json")}));
@@ -702,6 +703,7 @@ TEST(Cli, ReportingCommandsPrintOneJsonObject) {
                   .contains(QStringLiteral("heightScale")));
   const QJsonObject stats = error.value(QStringLiteral("uvErrorTexels")).toObject();
   EXPECT_GT(stats.value(QStringLiteral("pixels")).toDouble(), 0.0);
+  EXPECT_TRUE(stats.contains(QStringLiteral("minifiedPixels")));
   EXPECT_LE(stats.value(QStringLiteral("mean")).toDouble(),
             stats.value(QStringLiteral("p95")).toDouble() + 1e-9);
   EXPECT_LE(stats.value(QStringLiteral("p95")).toDouble(),
