@@ -128,3 +128,39 @@ ParallaxResult cellRayResult(CellRay ray, float t, int fetches) {
   result.samples = fetches;
   return result;
 }
+
+// Where the map is minified, the exact tracers stop at the first block of pyramid level `level`
+// whose maximum the ray reaches (at parameter t). Every other technique there sees the filtered
+// map, which lies at or below that maximum; taking the block's top as the hit put the visible
+// point ahead of that surface, often over the low mortar in front of a brick, whose self-shadow
+// ray then met the brick: far mortar lines showed dotted shadows that no march showed. So from
+// the block's top the ray marches the filtered map, read at the pixel's own mip level, in steps
+// of one level-`level` texel (at most kMinifiedSteps, as POM does with its layers) and meets it
+// where the last two samples' line crosses it (reference 001). Measured on the bricks sample at
+// 720x540 on llvmpipe: 8 steps doubled the exact tracers' frame time, 2 left a quarter of the
+// shadow difference to POM, 4 cost about half again (docs/techniques.md).
+const int kMinifiedSteps = 4;
+
+ParallaxResult filteredHitFrom(CellRay ray, float t, int level, float mipLevel, int fetches) {
+  float path = max(max(abs(ray.dir.x), abs(ray.dir.y)), 1e-4);  // level-0 texels per unit t
+  float dt = min(exp2(float(level)) / path, (1.0 - t) / float(kMinifiedSteps));
+  ParallaxResult here = cellRayResult(ray, t, fetches);
+  // The ray's height above the filtered map.
+  float gap = here.height - sampleHeightAtLevel(here.uv, mipLevel);
+  ++fetches;
+  if (gap <= 0.0 || dt <= 0.0) {
+    here.samples = fetches;
+    return here;
+  }
+  for (int i = 0; i < kMinifiedSteps; ++i) {
+    float nextT = min(t + dt, 1.0);
+    ParallaxResult next = cellRayResult(ray, nextT, 0);
+    float nextGap = next.height - sampleHeightAtLevel(next.uv, mipLevel);
+    ++fetches;
+    if (nextGap <= 0.0)
+      return cellRayResult(ray, mix(t, nextT, gap / max(gap - nextGap, 1e-6)), fetches);
+    t = nextT;
+    gap = nextGap;
+  }
+  return cellRayResult(ray, t, fetches);  // not met within the steps: where the march stopped
+}

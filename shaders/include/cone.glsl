@@ -11,9 +11,10 @@
 // cell's bilinear patch is intersected exactly (bilinear_cell.glsl); no step ever passes the
 // surface, so no refinement is needed and one-texel walls are never stepped over.
 // Where the height map is minified (read at mip level L > 0) the walk treats the pyramid's
-// level-L blocks as its cells and takes a block's top as the hit, as the quadtree does there
-// (within a pixel's footprint of the exact point); the exact hit would alias, jumping between
-// the texels a pixel covers as the view moves. Magnified, it is exact.
+// level-L blocks as its cells and, from the first block top it reaches, meets the filtered map
+// the other techniques read there, as the quadtree does (filteredHitFrom, bilinear_cell.glsl);
+// the exact hit would alias, jumping between the texels a pixel covers as the view moves.
+// Magnified, it is exact.
 
 uniform sampler2D uConeMap;  // R32F, one cone ratio per cell (texels per unit height), nearest
 
@@ -23,7 +24,8 @@ const int kConeIterationCap = 512;
 // is up to half a step off at p and at the point met, so each cone step keeps this much above.
 const float kConeMargin = 1.0 / 65535.0;
 
-ParallaxResult traceCones(vec2 uv, vec3 V, float scale, float bias, float mipLevel) {
+ParallaxResult traceCones(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias,
+                          float mipLevel) {
   CellRay ray = cellRay(uv, V, scale, bias);
   vec2 texels = vec2(ray.size);
   float speed = length(ray.dir);  // texels per unit of depth
@@ -59,10 +61,8 @@ ParallaxResult traceCones(vec2 uv, vec3 V, float scale, float bias, float mipLev
       t += max(coneStep, cellStep);
       continue;
     }
-    if (finest > 0) {  // the block's top, within the pixel's footprint
-      t = max(t, 1.0 - highest);
-      break;
-    }
+    if (finest > 0)  // from the block's top to the filtered map (bilinear_cell.glsl)
+      return filteredHitFrom(ray, max(t, 1.0 - highest), finest, mipLevel, fetches);
     float tau = patchHit(cell, corners, ray.start, ray.dir, t, tExit - t);
     if (tau >= 0.0) {
       t += tau;

@@ -8,6 +8,13 @@ float sampleHeight(vec2 uv, vec2 dx, vec2 dy) {
   return heightFromTexel(sampleMap(HEIGHT_SOURCE_MAP, uv, dx, dy));
 }
 
+// The same lookup at a given mip level (textureLod): where the level is known, as in the exact
+// tracers' minified refinement, it skips textureGrad's per-lookup level selection, which
+// llvmpipe computes in software.
+float sampleHeightAtLevel(vec2 uv, float level) {
+  return heightFromTexel(textureLod(HEIGHT_SOURCE_MAP, mapCoordinates(uv), level));
+}
+
 // Mip level the height map is read at here (GLSL 4.00 textureQueryLod).
 float heightMipLevel(vec2 uv) {
   return textureQueryLod(HEIGHT_SOURCE_MAP, mapCoordinates(uv)).x;

@@ -135,9 +135,9 @@ ParallaxResult marchHeightField(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, 
 ParallaxResult findVisiblePoint(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias,
                                 float mipLevel) {
 #if defined(TECHNIQUE_QUADTREE)
-  return traceQuadtree(uv, V, scale, bias, mipLevel);
+  return traceQuadtree(uv, V, dx, dy, scale, bias, mipLevel);
 #elif defined(TECHNIQUE_CONE)
-  return traceCones(uv, V, scale, bias, mipLevel);
+  return traceCones(uv, V, dx, dy, scale, bias, mipLevel);
 #elif defined(TECHNIQUE_PARALLAX)
   return parallaxOffset(uv, V, dx, dy, scale, bias, false);
 #elif defined(TECHNIQUE_PARALLAX_LIMITED)

@@ -7,14 +7,15 @@
 // (material_inputs.glsl); cells lie between texel centres (bilinear_cell.glsl).
 //
 // Where the height map is minified (read at mip level L > 0) the walk stops descending at level
-// L and takes the block's top as the hit: within a pixel's footprint of the exact point, as the
-// other techniques are there (they read the map's mip L). Magnified, it is exact.
+// L and, from the first block's top it reaches, meets the filtered map the other techniques
+// read there (filteredHitFrom, bilinear_cell.glsl). Magnified, it is exact.
 // The walk starts at the level whose blocks are as long as the ray's path, not at the 1x1 top.
 
 // Enough for a 16k map seen at a grazing angle; a ray still walking after it stops where it is.
 const int kQuadtreeIterationCap = 512;
 
-ParallaxResult traceQuadtree(vec2 uv, vec3 V, float scale, float bias, float mipLevel) {
+ParallaxResult traceQuadtree(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, float bias,
+                             float mipLevel) {
   CellRay ray = cellRay(uv, V, scale, bias);
   ivec2 size = ray.size;
   vec2 texels = vec2(size);
@@ -55,8 +56,8 @@ ParallaxResult traceQuadtree(vec2 uv, vec3 V, float scale, float bias, float mip
       --level;
       continue;
     }
-    if (finest > 0)  // minified: the block's top, within the pixel's footprint
-      break;
+    if (finest > 0)  // minified: from the block's top to the filtered map
+      return filteredHitFrom(ray, t, finest, mipLevel, fetches);
     // Level 0: the cell's bilinear patch, exactly.
     vec4 corners = cellCorners(cell0, texels);
     fetches += 4;  // one gather, four texels

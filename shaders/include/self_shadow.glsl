@@ -21,14 +21,10 @@ float shadowRayStart(vec2 uv, float height, vec2 dx, vec2 dy, float mipLevel,
                      inout int samples) {
   ++samples;
   float filtered = sampleHeight(uv, dx, dy);
+  // Minified, the exact tracers meet the filtered map as the marches do (filteredHitFrom in
+  // bilinear_cell.glsl); they once returned a pyramid block's top, from which no shadow ray was
+  // ever blocked, and shadows ended in a hard line where the map's first mip level began.
   float surface = max(height, filtered);
-#if defined(TECHNIQUE_QUADTREE) || defined(TECHNIQUE_CONE)
-  // Minified, the exact tracers return a pyramid block's top (quadtree.glsl, cone.glsl): the
-  // highest texel under the pixel, above the low mortar that the filtered shading still shows.
-  // A ray from there is never shadowed, so shadows ended in a hard line where the map's first
-  // mip level began. From the filtered height, as the marches start, they continue past it.
-  if (mipLevel >= 1.0) surface = filtered;
-#endif
   return surface + kShadowStartQuanta * max(uHeightQuantum, kShadowMinQuantum);
 }
 
