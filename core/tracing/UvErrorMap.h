@@ -3,8 +3,8 @@
 //
 // The tracer intersects the full-resolution map. Where the viewport reads the height map at mip
 // level 1 or coarser, every technique sees a filtered map (the marches a trilinear blend, the
-// exact tracers a pyramid block's top), so the comparison measures the mip chain, not the
-// technique: a plane seen from afar read 3.2 texels of mean error for POM and 3.6 for the
+// exact tracers a pyramid block, then that blend), so the comparison measures the mip chain, not
+// the technique: a plane seen from afar read 3.2 texels of mean error for POM and 3.6 for the
 // quadtree, which is exact. Those pixels are marked and left out of the statistics.
 #pragma once
 
