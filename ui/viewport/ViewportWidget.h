@@ -151,6 +151,11 @@ class ViewportWidget : public QOpenGLWidget {
  protected:
   void initializeGL() override;
   void paintGL() override;
+  // A new size makes the reduced frame on screen the wrong shape: the next frame is whole.
+  void resizeGL(int, int) override {
+    m_reducedShown = false;
+    m_refinedFrom = -1;
+  }
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
