@@ -26,6 +26,9 @@ export XDG_RUNTIME_DIR="$runtime"
 export QT_QPA_PLATFORM=xcb
 
 start=$(date +%s)
-xvfb-run -a -s '-screen 0 1600x1000x24' \
+# -noreset: an X server resets when its last client disconnects, and a client connecting during
+# the reset is refused. Between two test processes Xvfb often has no client, and a fresh-clone
+# run once failed that way ("cannot connect to the X display ':99'" in cli.pipeline_test).
+xvfb-run -a -s '-screen 0 1600x1000x24 -noreset' \
   ctest --test-dir "$build" --output-on-failure -j "$jobs" "$@"
 echo "run-tests: all tests passed in $(( $(date +%s) - start )) s"

@@ -7,7 +7,8 @@
 # Each relief-cli call is independent, so `make -j N` runs N at once and a second run redoes
 # only what changed. Usage:
 #   make -f docs/examples/materials.mk -j4 IN=scans OUT=out [CLI=relief-cli] [STRENGTH=8]
-# The preview needs an X display: run under xvfb-run -a on a server.
+# The preview needs an X display: run under xvfb-run -a -s '-noreset' on a server (without
+# -noreset Xvfb resets between jobs and a job connecting meanwhile is refused).
 CLI ?= relief-cli
 IN ?= in
 OUT ?= out
