@@ -10,6 +10,7 @@
 // multi-part EXR or a multi-page TIFF it reads the first part and says so. A bilevel TIFF
 // without its BitsPerSample tag, which OpenImageIO misreads, is refused with the reason.
 #include "core/image/ImageIO.h"
+#include "support/ImageCompare.h"
 #include "support/TestPaths.h"
 
 #include <ImfChannelList.h>
@@ -28,8 +29,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -71,32 +70,6 @@ std::vector<Variant> writeVariants(const std::string& folder) {
   return variants;
 }
 
-std::vector<float> readFloats(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  std::vector<float> values(std::size_t(in.tellg()) / sizeof(float));
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
-  return values;
-}
-
-// The largest difference between an image and reference texels (row by row, channels
-// interleaved), or infinity when the shapes differ.
-double worstDifference(const Image& image, const std::vector<float>& expected) {
-  if (expected.size() !=
-      std::size_t(image.width()) * std::size_t(image.height()) * std::size_t(image.channels())) {
-    return INFINITY;
-  }
-  double worst = 0.0;
-  std::size_t i = 0;
-  for (int y = 0; y < image.height(); ++y) {
-    for (int x = 0; x < image.width(); ++x) {
-      for (int c = 0; c < image.channels(); ++c)
-        worst = std::max(worst, double(std::abs(expected[i++] - image.at(x, y, c))));
-    }
-  }
-  return worst;
-}
-
 TEST(ImageConformance, JpegTgaAndTiffReadAsTheirIndependentDecodersReadThem) {
   const std::string folder = test::scratchFolder();
   const std::vector<Variant> variants = writeVariants(folder);
@@ -118,8 +91,9 @@ TEST(ImageConformance, JpegTgaAndTiffReadAsTheirIndependentDecodersReadThem) {
     EXPECT_EQ(image->height(), variant.height);
     ASSERT_EQ(image->channels(), variant.channels);
     const std::string stem = variant.file.substr(0, variant.file.rfind('.'));
-    EXPECT_LE(worstDifference(image.value(), readFloats(folder + "/" + stem + ".f32")),
-              variant.tolerance + 1e-6);
+    EXPECT_LE(
+        test::worstDifference(image.value(), test::readFloat32File(folder + "/" + stem + ".f32")),
+        variant.tolerance + 1e-6);
     // The header agrees with the pixels, and the streaming check passes the file.
     const Result<ImageFileInfo> info = readImageInfo(path);
     ASSERT_TRUE(info.ok()) << info.error();
@@ -291,7 +265,7 @@ TEST(ImageConformance, ExrReadsTheStoredValuesScanlineTiledAndFloat) {
     ASSERT_TRUE(image.ok()) << image.error();
     ASSERT_EQ(image->channels(), c.channels);
     // Exact: half and float widen to float without rounding.
-    EXPECT_EQ(worstDifference(image.value(), c.expected), 0.0);
+    EXPECT_EQ(test::worstDifference(image.value(), c.expected), 0.0);
     EXPECT_EQ(image->colorSpace(), ColorSpace::Linear);
     const Result<ImageFileInfo> info = readImageInfo(path);
     ASSERT_TRUE(info.ok()) << info.error();
@@ -310,7 +284,7 @@ TEST(ImageConformance, AMultiPartExrReadsItsFirstPartAndSaysSo) {
   const Result<Image> image = loadImage(path);
   ASSERT_TRUE(image.ok()) << image.error();
   ASSERT_EQ(image->channels(), 1);
-  EXPECT_EQ(worstDifference(image.value(), floatHeights()), 0.0);
+  EXPECT_EQ(test::worstDifference(image.value(), floatHeights()), 0.0);
   const Result<ImageFileInfo> info = readImageInfo(path);
   ASSERT_TRUE(info.ok()) << info.error();
   EXPECT_EQ(info->subimages, 2);

@@ -7,6 +7,7 @@
 // reading of the same file, and the streaming check of the pixel data (PngVerify) agrees with
 // the decoder on every valid and every damaged file.
 #include "core/image/ImageIO.h"
+#include "support/ImageCompare.h"
 #include "support/TestPaths.h"
 
 #include <OpenImageIO/imageio.h>
@@ -17,8 +18,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -61,14 +60,6 @@ std::vector<Variant> writeVariants(const std::string& folder) {
   return variants;
 }
 
-std::vector<float> readFloats(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  std::vector<float> values(std::size_t(in.tellg()) / sizeof(float));
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
-  return values;
-}
-
 TEST(PngConformance, EveryColourTypeAndDepthReadsAsPillowReadsIt) {
   const std::string folder = test::scratchFolder();
   const std::vector<Variant> variants = writeVariants(folder);
@@ -87,23 +78,11 @@ TEST(PngConformance, EveryColourTypeAndDepthReadsAsPillowReadsIt) {
     ASSERT_EQ(image->width(), variant.width) << variant.name;
     ASSERT_EQ(image->height(), variant.height) << variant.name;
     ASSERT_EQ(image->channels(), variant.channels) << variant.name;
-    const std::vector<float> expected = readFloats(folder + "/" + variant.name + ".f32");
-    ASSERT_EQ(expected.size(), std::size_t(variant.width * variant.height * variant.channels))
-        << variant.name;
-    double worst = 0.0;
-    for (int y = 0; y < variant.height; ++y) {
-      for (int x = 0; x < variant.width; ++x) {
-        for (int c = 0; c < variant.channels; ++c) {
-          const float theirs =
-              expected[(std::size_t(y) * std::size_t(variant.width) + std::size_t(x)) *
-                           std::size_t(variant.channels) +
-                       std::size_t(c)];
-          worst = std::max(worst, double(std::abs(theirs - image->at(x, y, c))));
-        }
-      }
-    }
     // Both sides divide the same integers by 255 or 65535 in floating point.
-    EXPECT_LE(worst, 1e-6) << variant.name;
+    EXPECT_LE(test::worstDifference(image.value(),
+                                    test::readFloat32File(folder + "/" + variant.name + ".f32")),
+              1e-6)
+        << variant.name;
   }
   EXPECT_GE(valid, 20);
   EXPECT_EQ(refused, 3);

@@ -11,12 +11,10 @@ import sys
 
 from PIL import Image
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from conformance_pattern import H, W, pattern, rgba  # noqa: E402 (after the line above)
+
 out = sys.argv[1]
-W, H = 61, 37  # odd sizes: no row or tile ends on a boundary of 8 or 16
-
-
-def pattern(x, y):
-    return (x * 7 + y * 13 + (x * y) % 11) % 256
 
 
 def smooth(x, y):
@@ -28,13 +26,6 @@ def smooth(x, y):
 def rgb(f=pattern):
     im = Image.new("RGB", (W, H))
     im.putdata([(f(x, y), f(y, x), (x * 4 + y) % 256) for y in range(H) for x in range(W)])
-    return im
-
-
-def rgba():
-    im = Image.new("RGBA", (W, H))
-    im.putdata([(pattern(x, y), pattern(y, x), (x * 4) % 256, (y * 7 + 40) % 256)
-                for y in range(H) for x in range(W)])
     return im
 
 

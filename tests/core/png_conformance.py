@@ -9,24 +9,15 @@ import sys
 
 from PIL import Image, ImageCms, PngImagePlugin
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from conformance_pattern import H, W, pattern, rgba  # noqa: E402 (after the line above)
+
 out = sys.argv[1]
-W, H = 61, 37  # odd sizes: rows of 1, 2 and 4-bit samples end inside a byte
-
-
-def pattern(x, y):
-    return (x * 7 + y * 13 + (x * y) % 11) % 256
 
 
 def grey(levels):
     im = Image.new("L", (W, H))
     im.putdata([pattern(x, y) * (levels - 1) // 255 * (255 // (levels - 1))
-                for y in range(H) for x in range(W)])
-    return im
-
-
-def rgba():
-    im = Image.new("RGBA", (W, H))
-    im.putdata([(pattern(x, y), pattern(y, x), (x * 4) % 256, (y * 7 + 40) % 256)
                 for y in range(H) for x in range(W)])
     return im
 

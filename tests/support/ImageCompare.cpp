@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 namespace relief::test {
 
@@ -71,6 +72,32 @@ ImageDifference compareImages(const core::Image& a, const core::Image& b) {
          << difference.maxError * 255.0 << "/255 (tolerance " << maxTolerance * 255.0 << "), mean "
          << difference.meanError * 255.0 << "/255 (tolerance " << meanTolerance * 255.0
          << "); wrote " << actualPath << " and " << diffPath;
+}
+
+std::vector<float> readFloat32File(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in)
+    return {};
+  std::vector<float> values(std::size_t(in.tellg()) / sizeof(float));
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
+  return values;
+}
+
+double worstDifference(const core::Image& image, const std::vector<float>& expected) {
+  if (expected.size() !=
+      std::size_t(image.width()) * std::size_t(image.height()) * std::size_t(image.channels())) {
+    return INFINITY;
+  }
+  double worst = 0.0;
+  std::size_t i = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      for (int c = 0; c < image.channels(); ++c)
+        worst = std::max(worst, double(std::abs(expected[i++] - image.at(x, y, c))));
+    }
+  }
+  return worst;
 }
 
 }  // namespace relief::test

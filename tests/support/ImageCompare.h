@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace relief::test {
 
@@ -17,6 +18,12 @@ struct ImageDifference {
 };
 
 ImageDifference compareImages(const core::Image& a, const core::Image& b);
+
+// Reference texels as the conformance scripts write them: a file of float32 values, row by row,
+// channels interleaved (empty when the file cannot be read).
+std::vector<float> readFloat32File(const std::string& path);
+// The largest |difference| between an image and such texels, or infinity when the counts differ.
+double worstDifference(const core::Image& image, const std::vector<float>& expected);
 
 // Compares with tests/baselines/<name>.png. Set RELIEF_UPDATE_BASELINES=1 to (re)write the
 // baseline instead. On failure writes <name>-actual.png and <name>-diff.png (difference x8)
