@@ -41,8 +41,6 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
   m_gain = new ParameterSlider(gainSpec, this);
   m_gain->setMaximumWidth(240);
   m_gain->spinBox()->setPrefix(QStringLiteral("x"));
-  m_gain->setToolTip(
-      QString::fromUtf8(gainSpec.description.data(), qsizetype(gainSpec.description.size())));
   m_threshold = new QSpinBox(this);
   m_threshold->setRange(0, 255);
   m_threshold->setValue(8);

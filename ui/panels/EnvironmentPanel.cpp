@@ -54,7 +54,6 @@ EnvironmentPanel::EnvironmentPanel(ViewportWidget* viewport, QWidget* parent)
   m_intensity->setRange(0.0, core::Environment::kMaxIntensity);
   m_intensity->setSingleStep(0.1);
   m_intensity->setToolTip(tr("Multiplier on the environment's radiance."));
-  m_rotation->setToolTip(toQString(rotationSpec().description));
   m_rotation->spinBox()->setSuffix(QStringLiteral("°"));
   for (core::Background background : core::allBackgrounds()) {
     m_background->addItem(toQString(core::backgroundLabel(background)),

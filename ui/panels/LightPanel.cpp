@@ -47,10 +47,6 @@ const core::OptionSpec& elevationSpec() {
 }
 constexpr int kLowestElevation = -90;  // with "Below the horizon"
 
-QString tooltipOf(const core::OptionSpec& spec) {
-  return toQString(spec.description);
-}
-
 glm::vec3 toLinear(const QColor& color) {
   return glm::vec3(core::srgbToLinear(float(color.redF())),
                    core::srgbToLinear(float(color.greenF())),
@@ -80,9 +76,7 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   environmentColumn->addWidget(m_environment);
   column->addWidget(environmentGroup);
   column->addStretch(1);
-  m_azimuth->setToolTip(tooltipOf(azimuthSpec()));
   m_azimuth->spinBox()->setSuffix(QStringLiteral("°"));
-  m_elevation->setToolTip(tooltipOf(elevationSpec()));
   m_elevation->spinBox()->setSuffix(QStringLiteral("°"));
   m_belowHorizon->setToolTip(
       tr("Let the elevation go below 0: the light then comes from under the surface, which "

@@ -33,6 +33,8 @@ ParameterSlider::ParameterSlider(const core::OptionSpec& spec, QWidget* parent)
   m_spinBox->setMinimumWidth(72);
   m_spinBox->setAlignment(Qt::AlignRight);
 
+  // What the value is, its unit, range and default: the spec says it once for every slider.
+  setToolTip(QString::fromStdString(core::describeOption(spec)));
   m_slider->installEventFilter(this);
   connect(m_slider, &QSlider::sliderPressed, this, &ParameterSlider::dragStarted);
   connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
