@@ -9,6 +9,8 @@
 // Quality: PSNR (dB) for colour, mean angular error (degrees) for normals, PSNR for height.
 // Run: build/release/tools/bench-compress [--quick] [--photos]   (--quick skips quality
 // "best", --photos stops after the photographs)
+//      build/release/tools/bench-compress --squish FILE.png   (only libsquish's cluster-fit BC1
+// of that image: "SECONDS PSNR" on one line, for tools/bench-cli's whole-process BC1 row)
 #include "core/compression/BlockCodecs.h"
 #include "core/compression/CompressionMetrics.h"
 #include "core/compression/Compressor.h"
@@ -338,6 +340,19 @@ void benchEacAgainstExhaustive(const core::Image& height, core::CompressionQuali
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  if (argc == 3 && std::strcmp(argv[1], "--squish") == 0) {
+    core::Result<core::Image> image = core::loadImage(argv[2]);
+    if (!image) {
+      std::fprintf(stderr, "bench-compress: %s\n", image.error().c_str());
+      return 1;
+    }
+    double seconds = 0.0;
+    const core::CompressedTexture texture =
+        squishBc1(image.value(), squish::kColourClusterFit, nullptr, seconds);
+    std::printf("%.3f %.3f\n", seconds,
+                core::measureImageError(image.value(), core::decodeAsMap(texture).value()).psnr);
+    return 0;
+  }
   bool quick = false, photosOnly = false;
   for (int i = 1; i < argc; ++i) {
     quick = quick || std::strcmp(argv[i], "--quick") == 0;
