@@ -24,18 +24,22 @@ namespace {
 struct Bc1Effort {
   int refinePasses;
   int clusterRadius;  // boundaries tried within this distance of the refined ones (0: none)
-  bool threeColour;   // try BC1's three-colour mode
+  // BC1's three-colour mode is tried where the four-colour fit's mean squared error per texel
+  // and channel (in 8-bit levels, at unit weight) exceeds this; never when negative.
+  float threeColourAbove;
   int perturbSweeps;  // sweeps nudging the quantised endpoints a step at a time (0: none)
 };
-// Measured on five photographs (tools/bench-compress --photos; uniform weights, mean PSNR, one
-// core): fast 35.48 dB in 0.7 us per block, normal 36.01 dB in 2.8 us, best 36.05 dB in 4.6 us,
-// against libsquish's cluster fit's 36.03 dB in about 30 us. In normal, the cluster search adds
-// 0.07 dB for 0.7 us and perturbation 0.16 dB for 1.4 us; the three-colour mode adds 0.02 dB
-// for 0.5 us, so only best has it.
+// Measured on a 2048x2048 mosaic of twelve photographs and four game colour maps
+// (tools/bench-cli's; uniform weights, one core): normal 36.37 dB in 2.2 us per block, best
+// 36.42 dB in 4.9 us, against libsquish's cluster fit's 36.41 dB in 14.8 us. In normal, one
+// perturbation sweep and the three-colour mode where the error is large (an RMS of 4.6 levels
+// and up) give 36.37 dB; two sweeps and no three-colour mode gave 36.35 dB in 13% more time.
+// Trying the three-colour mode on every block cost 19% more time for 36.38 dB: on blocks
+// with small errors it wins before perturbation and then blocks a better four-colour fit.
 constexpr Bc1Effort kBc1Efforts[3] = {
-    {1, 0, false, 0},
-    {1, 1, false, 2},
-    {3, 2, true, 3},
+    {1, 0, -1.0f, 0},
+    {1, 1, 64.0f / 3.0f, 1},
+    {3, 2, 0.0f, 3},
 };
 
 int expand5(int v) {
@@ -380,17 +384,25 @@ void perturb(const Source& source, int sweeps, Candidate& best) {
   };
   for (int c = 0; c < 3; ++c)
     channelShare(c, best.e0.q[c], best.e1.q[c], share[c]);
-  // The error with channel `c`'s shares replaced by `trial` (texels innermost and floats only,
-  // so that it vectorises; the levels are found again only for a step that is kept).
-  const auto total = [&](int c, const float(&trial)[4][16]) {
+  // The error with channel `c`'s shares replaced by `trial`, the other two channels' shares
+  // summed once per channel in `others` (texels innermost and floats only, so that it
+  // vectorises; the levels are found again only for a step that is kept).
+  float others[4][16];
+  const auto sumOthers = [&](int c) {
     const float(&first)[4][16] = share[c == 0 ? 1 : 0];
     const float(&second)[4][16] = share[c == 2 ? 1 : 2];
+    for (int l = 0; l < levels; ++l) {
+      for (int t = 0; t < 16; ++t)
+        others[l][t] = first[l][t] + second[l][t];
+    }
+  };
+  const auto total = [&](const float(&trial)[4][16]) {
     float low[16];
     for (int t = 0; t < 16; ++t)
-      low[t] = trial[0][t] + first[0][t] + second[0][t];
+      low[t] = trial[0][t] + others[0][t];
     for (int l = 1; l < levels; ++l) {
       for (int t = 0; t < 16; ++t)
-        low[t] = std::min(low[t], trial[l][t] + first[l][t] + second[l][t]);
+        low[t] = std::min(low[t], trial[l][t] + others[l][t]);
     }
     float sum = 0.0f;
     for (int t = 0; t < 16; ++t)
@@ -399,8 +411,9 @@ void perturb(const Source& source, int sweeps, Candidate& best) {
   };
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     const float before = best.error;
-    for (int e = 0; e < 2; ++e) {
-      for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < 3; ++c) {
+      sumOthers(c);
+      for (int e = 0; e < 2; ++e) {
         for (int step : {-1, 1}) {
           Endpoint e0 = best.e0, e1 = best.e1;
           int& q = (e == 0 ? e0 : e1).q[c];
@@ -409,7 +422,7 @@ void perturb(const Source& source, int sweeps, Candidate& best) {
             continue;
           float trial[4][16];
           channelShare(c, e0.q[c], e1.q[c], trial);
-          if (total(c, trial) < best.error) {
+          if (total(trial) < best.error) {
             best.error = std::numeric_limits<float>::max();
             evaluate(source, e0, e1, best.fourColour, best);  // the levels, and the same error
             std::copy(&trial[0][0], &trial[0][0] + 64, &share[c][0][0]);
@@ -544,7 +557,9 @@ void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality q
     clusterSearch(source, sorted, 4, effort.clusterRadius, best);
     refine(source, 1, best);
   }
-  if (bc1 && effort.threeColour && best.error > 0.0f) {
+  const float weightSum = source.weight[0] + source.weight[1] + source.weight[2];
+  if (bc1 && effort.threeColourAbove >= 0.0f &&
+      best.error > effort.threeColourAbove * weightSum * float(source.count)) {
     // The three-colour mode (half-way point, no black: Relief's BC1 is opaque) where it wins.
     Candidate three;
     evaluate(source, quantise(e0), quantise(e1), false, three);
