@@ -27,6 +27,7 @@ class SetCompressionCommand;
 class SetMapCommand;
 class SetParameterCommand;
 class SetTechniqueCommand;
+class ViewDocument;
 }  // namespace relief::ui::document
 
 namespace relief::ui::inline panels {
@@ -47,6 +48,8 @@ class GeneratorRunner;
 }  // namespace relief::ui::tasks
 
 namespace relief::ui::inline viewport {
+class ConeMapBuilder;
+class ErrorViewTrace;
 class InteractionMonitor;
 class ViewportWidget;
 }  // namespace relief::ui::viewport
@@ -56,4 +59,5 @@ class MainWindow;
 class MapFileLoader;
 class ViewToolBar;
 class ViewportImageExport;
+class ViewportStatus;
 }  // namespace relief::ui::window

@@ -16,6 +16,8 @@ struct DirectionalLight {
 
   // Unit vector pointing from the surface toward the light.
   glm::vec3 direction() const;
+
+  bool operator==(const DirectionalLight&) const = default;
 };
 
 }  // namespace relief::core::inline view

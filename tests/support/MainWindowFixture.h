@@ -5,6 +5,7 @@
 #include "renderer/ImageConversion.h"
 #include "support/TestPaths.h"
 #include "ui/document/MaterialDocument.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/MainWindow.h"
 
@@ -32,6 +33,7 @@ class MainWindowFixture : public ::testing::Test {
   }
 
   ui::MaterialDocument* document() const { return m_window->document(); }
+  ui::ViewDocument* viewDocument() const { return m_window->viewDocument(); }
   ui::ViewportWidget* viewport() const { return m_window->viewport(); }
   // The centre of a slider's handle, where a user presses to drag it.
   static QPoint sliderHandle(QSlider* slider) {

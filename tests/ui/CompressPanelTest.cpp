@@ -99,7 +99,7 @@ TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks)
   // The panel switched the viewport to the wipe; llvmpipe has every BC format, so the status
   // bar says the blocks went to the GPU as they are.
   ui::ViewportWidget* viewport = m_window->viewport();
-  EXPECT_EQ(viewport->compressedView(), ui::ViewportWidget::CompressedView::Wipe);
+  EXPECT_EQ(viewDocument()->compressedView(), ui::ViewDocument::CompressedView::Wipe);
   const QImage wipe = viewport->grabFramebuffer();
   QTest::qWait(50);
   QLabel* upload = m_window->compressedUploadLabel();

@@ -107,6 +107,39 @@ TEST_F(DocumentWorkflow, ChangeSaveReopenGivesTheSameMaterial) {
                   m_window->viewport()->view().camera.yawDeg);
 }
 
+// The view's edits (light, environment, display, mesh) are the preset's: saved, and shown again
+// when it is reopened.
+TEST_F(DocumentWorkflow, ViewEditsAreSavedAndReopened) {
+  ui::ViewDocument* view = viewDocument();
+  core::DirectionalLight light = view->light();
+  light.azimuthDeg = 210.0f;
+  light.elevationDeg = 22.0f;
+  light.intensity = 1.7f;
+  view->setLight(light);
+  core::Environment environment = view->environment();
+  environment.source = "sky";
+  environment.rotationDeg = -60.0f;
+  view->setEnvironment(environment);
+  core::DisplayTransform display = view->display();
+  display.exposureEv = -0.5f;
+  display.toneMapper = core::ToneMapper::PbrNeutral;
+  view->setDisplay(display);
+  ASSERT_TRUE(view->showMesh(QStringLiteral("sphere")));
+  EXPECT_TRUE(document()->isModified()) << "view edits are unsaved work";
+  ASSERT_TRUE(document()->save(QString::fromStdString(m_path), view->viewState()));
+
+  ui::MainWindow reopened;
+  reopened.show();
+  ASSERT_TRUE(reopened.openPreset(QString::fromStdString(m_path)));
+  const ui::ViewDocument* shown = reopened.viewDocument();
+  EXPECT_EQ(shown->light(), light);
+  EXPECT_EQ(shown->environment(), environment);
+  EXPECT_EQ(shown->display(), display);
+  EXPECT_EQ(shown->meshSource(), QStringLiteral("sphere"));
+  EXPECT_EQ(reopened.document()->undoStack()->count(), 0) << "opening is not an edit";
+  EXPECT_EQ(reopened.viewport()->view().light, light);
+}
+
 TEST_F(DocumentWorkflow, AGeneratedMapIsWrittenBesideThePresetOnSave) {
   auto flat = std::make_shared<core::Image>(64, 64, 1);
   document()->applyGenerated(core::MapSlot::AmbientOcclusion, flat, QStringLiteral("AO"), {});
@@ -264,7 +297,7 @@ TEST_F(DocumentWorkflow, LibraryListsSamplesAndAppliesParametersAsOneStep) {
 
 TEST_F(DocumentWorkflow, ExportDialogWritesAGodotMaterial) {
   const std::string folder = scratchFolder() + "/ui-export";
-  ui::ExportDialog dialog(document()->toPreset(core::ViewState{}), m_window->viewport()->mesh(),
+  ui::ExportDialog dialog(document()->toPreset(core::ViewState{}), m_window->viewDocument()->mesh(),
                           m_window.get());
   dialog.kindBox()->setCurrentIndex(2);
   dialog.folderEdit()->setText(QString::fromStdString(folder));
@@ -280,7 +313,7 @@ TEST_F(DocumentWorkflow, ExportDialogWritesAGodotMaterial) {
   EXPECT_EQ(dialog.writtenPath().toStdString(), folder + "/bricks.tres");
   // The next export offers the same target (and would the next run: QSettings).
   const QString godot = dialog.kindBox()->currentText();
-  ui::ExportDialog again(document()->toPreset(core::ViewState{}), m_window->viewport()->mesh(),
+  ui::ExportDialog again(document()->toPreset(core::ViewState{}), m_window->viewDocument()->mesh(),
                          m_window.get());
   EXPECT_EQ(again.kindBox()->currentIndex(), 2);
   EXPECT_EQ(again.kindBox()->currentText(), godot);
@@ -294,7 +327,7 @@ TEST_F(DocumentWorkflow, ExportCanBeCancelledWhileItRuns) {
   // ASTC 4x4 at best quality takes seconds for the 1024x1024 colour map: time to cancel.
   preset.compression[std::size_t(core::MapSlot::Color)] =
       core::CompressionSettings{core::TextureFormat::Astc4x4, core::CompressionQuality::Best, true};
-  ui::ExportDialog dialog(preset, m_window->viewport()->mesh(), m_window.get());
+  ui::ExportDialog dialog(preset, m_window->viewDocument()->mesh(), m_window.get());
   dialog.kindBox()->setCurrentIndex(int(core::ExportKind::Package));
   dialog.folderEdit()->setText(QString::fromStdString(folder));
   QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);

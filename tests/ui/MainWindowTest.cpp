@@ -11,6 +11,7 @@
 #include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/document/MaterialDocument.h"
+#include "ui/panels/LightPanel.h"
 #include "ui/panels/ParameterPanel.h"
 #include "ui/panels/ParameterSlider.h"
 #include "ui/viewport/ViewportWidget.h"
@@ -31,6 +32,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace relief::test {
@@ -143,7 +145,7 @@ TEST_F(MainWindowTest, ViewportMatchesTheOffscreenRenderOfTheSameView) {
   const core::Image viewportFrame = grabbed();
   auto offscreen = renderer::OffscreenRenderer::create();
   ASSERT_TRUE(offscreen.ok()) << offscreen.error();
-  offscreen.value()->setMesh(m_window->viewport()->mesh());
+  offscreen.value()->setMesh(m_window->viewDocument()->mesh());
   offscreen.value()->setMaterial(m_window->document()->material());
   core::Result<core::Image> rendered = offscreen.value()->render(
       m_window->viewport()->view(), viewportFrame.width(), viewportFrame.height());
@@ -309,6 +311,32 @@ TEST_F(MainWindowTest, CtrlDragMovesTheLightAndPlainDragOrbits) {
   QTest::mouseMove(viewport, centre + QPoint(50, 0));
   QTest::mouseRelease(viewport, Qt::LeftButton, {}, centre + QPoint(50, 0));
   EXPECT_NE(viewport->view().camera.yawDeg, yaw);
+}
+
+// A light drag in the viewport is one undo step of the view document, and the Light panel, which
+// knows only the document, shows it; undo brings both back.
+TEST_F(MainWindowTest, ALightDragIsOneUndoStepThatThePanelFollows) {
+  ui::ViewportWidget* viewport = m_window->viewport();
+  QUndoStack* stack = m_window->document()->undoStack();
+  const int steps = stack->index();
+  const core::DirectionalLight before = m_window->viewDocument()->light();
+  const QPoint centre = viewport->rect().center();
+  QTest::mousePress(viewport, Qt::LeftButton, Qt::ControlModifier, centre);
+  for (int x = 10; x <= 60; x += 10)
+    QTest::mouseMove(viewport, centre + QPoint(x, -x / 2));
+  QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ControlModifier, centre + QPoint(60, -30));
+  const core::DirectionalLight dragged = m_window->viewDocument()->light();
+  EXPECT_NE(dragged, before);
+  EXPECT_EQ(stack->index(), steps + 1) << "six moves, one step";
+  EXPECT_EQ(viewport->view().light, dragged);
+  EXPECT_EQ(m_window->lightPanel()->azimuthControl()->value(),
+            double((int(std::lround(dragged.azimuthDeg)) % 360 + 360) % 360));
+  EXPECT_TRUE(m_window->windowTitle().contains(QLatin1Char('*'))) << "the preset saves it";
+  stack->undo();
+  EXPECT_EQ(m_window->viewDocument()->light(), before);
+  EXPECT_EQ(viewport->view().light, before);
+  EXPECT_EQ(m_window->lightPanel()->azimuthControl()->value(),
+            double(std::lround(before.azimuthDeg)));
 }
 
 }  // namespace

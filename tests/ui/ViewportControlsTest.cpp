@@ -42,7 +42,7 @@ class ViewportControls : public MainWindowFixture {
  protected:
   void SetUp() override {
     openWindow(1100, 700, samplePreset("cobblestones"));
-    viewport()->setDebugView(core::DebugView::Shading);
+    viewDocument()->setDebugView(core::DebugView::Shading);
   }
 
   QWidget* editor(ParamId id) { return m_window->parameterPanel()->editor(id); }
@@ -90,11 +90,13 @@ TEST_F(ViewportControls, EveryParameterChangesTheFrame) {
   // Relief mapping with soft shadows: every parameter but one is in use. Close, low camera
   // and a low light, where samples and shadows matter most.
   document()->setTechnique(core::Technique::Relief);
-  renderer::RenderView view = viewport()->view();
-  view.camera.pitchDeg = 20.0f;
-  view.camera.distance = 0.9f;
-  view.light.elevationDeg = 15.0f;
-  viewport()->setView(view);
+  core::OrbitCamera camera = viewDocument()->camera();
+  camera.pitchDeg = 20.0f;
+  camera.distance = 0.9f;
+  viewDocument()->setCamera(camera);
+  core::DirectionalLight light = viewDocument()->light();
+  light.elevationDeg = 15.0f;
+  viewDocument()->setLight(light);
   for (const core::ParameterSpec& spec : core::allParameters()) {
     SCOPED_TRACE(std::string(spec.name));
     // Max tessellation is the displacement technique's alone.
@@ -106,8 +108,8 @@ TEST_F(ViewportControls, EveryParameterChangesTheFrame) {
                                                               ? core::ShadingModel::Pbr
                                                               : core::ShadingModel::Classic)));
     // Write-displaced-depth changes only depth: watch it in the depth view.
-    viewport()->setDebugView(spec.id == ParamId::DepthOffset ? core::DebugView::Depth
-                                                             : core::DebugView::Shading);
+    viewDocument()->setDebugView(spec.id == ParamId::DepthOffset ? core::DebugView::Depth
+                                                                 : core::DebugView::Shading);
     const core::Image before = grabbed();
     changeThroughItsControl(spec.id);
     EXPECT_TRUE(frameChanged(before, grabbed()));
@@ -199,7 +201,7 @@ TEST_F(ViewportControls, LightControlsMoveTheLight) {
   before = after;
   after = grabbed();
   EXPECT_TRUE(frameChanged(before, after));
-  EXPECT_EQ(viewport()->viewState().display->exposureEv, 1.0f);  // presets save it
+  EXPECT_EQ(viewDocument()->viewState().display->exposureEv, 1.0f);  // presets save it
   // Ctrl+drag in the viewport moves the same light, and the panel follows.
   const int azimuth = light->azimuthSlider()->value();
   const QPoint centre = viewport()->rect().center();
@@ -212,7 +214,7 @@ TEST_F(ViewportControls, LightControlsMoveTheLight) {
 // The heat-map legend is drawn in its colours in the viewport (it was once drawn grey there,
 // while the CLI's was coloured): its blue and red ends are found in the frame's corner.
 TEST_F(ViewportControls, HeatmapLegendIsDrawnInColour) {
-  viewport()->setDebugView(core::DebugView::Steps);
+  viewDocument()->setDebugView(core::DebugView::Steps);
   const core::Image frame = grabbed();
   int red = 0, blue = 0;
   for (int y = frame.height() * 4 / 5; y < frame.height(); ++y) {
@@ -318,7 +320,7 @@ TEST_F(ViewportControls, EnvironmentControlsChangeThePbrFrame) {
     panel->backgroundBox()->setCurrentIndex(i);
     expectChange(qPrintable(panel->backgroundBox()->currentText()));
   }
-  EXPECT_EQ(viewport()->viewState().environment->rotationDeg, 90.0f);  // presets save it
+  EXPECT_EQ(viewDocument()->viewState().environment->rotationDeg, 90.0f);  // presets save it
 
   // A square EXR is not an equirectangular map: refused, the environment kept.
   const core::Environment kept = viewport()->view().environment;
@@ -359,9 +361,16 @@ TEST_F(ViewportControls, TheDisplayAndEnvironmentAreRememberedForTheNextRun) {
   core::DisplayTransform display;
   display.exposureEv = 1.5f;
   display.toneMapper = core::ToneMapper::Aces;
-  viewport()->setEnvironment(environment);
-  viewport()->setDisplayTransform(display);
-  ASSERT_TRUE(m_window->close());
+  viewDocument()->setEnvironment(environment);
+  viewDocument()->setDisplay(display);
+  // The environment is part of the preset's view, so the edit asks before closing; the settings
+  // remember it for the next run whatever the answer.
+  EXPECT_TRUE(document()->isModified());
+  {
+    DialogAnswerer discard(QStringLiteral("Discard"));
+    ASSERT_TRUE(m_window->close());
+    EXPECT_EQ(discard.answered(), 1);
+  }
 
   ui::MainWindow next;
   EXPECT_EQ(next.viewport()->view().environment, environment);
@@ -370,8 +379,11 @@ TEST_F(ViewportControls, TheDisplayAndEnvironmentAreRememberedForTheNextRun) {
             QStringLiteral("sky"));
 
   environment.source = scratchFolder() + "/gone.exr";
-  next.viewport()->setEnvironment(environment);
-  ASSERT_TRUE(next.close());
+  next.viewDocument()->setEnvironment(environment);
+  {
+    DialogAnswerer discard(QStringLiteral("Discard"));
+    ASSERT_TRUE(next.close());
+  }
   ui::MainWindow third;
   EXPECT_EQ(third.viewport()->view().environment.source, "studio");
 }
@@ -404,7 +416,9 @@ TEST_F(ViewportControls, NothingRedrawsWhenNothingChanged) {
   QSignalSpy frames(viewport(), &ui::ViewportWidget::frameRendered);
   QTest::qWait(400);
   EXPECT_EQ(frames.count(), 0);
-  viewport()->setLight(viewport()->view().light);  // a change request: one redraw
+  core::DirectionalLight light = viewDocument()->light();
+  light.azimuthDeg += 1.0f;
+  viewDocument()->setLight(light);  // a change request: one redraw
   QTest::qWait(200);
   EXPECT_GE(frames.count(), 1);
 }

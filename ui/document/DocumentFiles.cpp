@@ -3,7 +3,7 @@
 
 #include "ui/document/MaterialDocument.h"
 #include "ui/document/RecoveryStore.h"
-#include "ui/viewport/ViewportWidget.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/window/AppSettings.h"
 
 #include <QApplication>
@@ -29,12 +29,11 @@ QStringList warningLines(const std::vector<std::string>& warnings) {
 
 }  // namespace
 
-DocumentFiles::DocumentFiles(MaterialDocument* document, ViewportWidget* viewport,
-                             QWidget* dialogParent)
+DocumentFiles::DocumentFiles(MaterialDocument* document, ViewDocument* view, QWidget* dialogParent)
     : QObject(dialogParent),
       m_document(document),
       m_parent(dialogParent),
-      m_viewport(viewport),
+      m_view(view),
       m_recovery(new RecoveryStore(this)) {
   connect(&m_autosaveTimer, &QTimer::timeout, this, &DocumentFiles::autosaveNow);
   connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, [this](bool clean) {
@@ -60,7 +59,7 @@ void DocumentFiles::updateAutosaveInterval() {
 
 void DocumentFiles::autosaveNow() {
   if (m_document->isModified())
-    m_recovery->autosave(m_document->toPreset(m_viewport->viewState()), m_document->filePath());
+    m_recovery->autosave(m_document->toPreset(m_view->viewState()), m_document->filePath());
 }
 
 QString DocumentFiles::displayName() const {
@@ -191,7 +190,7 @@ bool DocumentFiles::saveAs() {
 
 bool DocumentFiles::saveTo(const QString& path) {
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  core::Result<core::SavedPreset> saved = m_document->save(path, m_viewport->viewState());
+  core::Result<core::SavedPreset> saved = m_document->save(path, m_view->viewState());
   QApplication::restoreOverrideCursor();
   if (!saved) {
     QMessageBox::critical(m_parent, tr("Cannot save"),
@@ -290,7 +289,7 @@ void DocumentFiles::offerRecovery() {
 
 void DocumentFiles::showView(const core::ViewState& view) {
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  const core::Status shown = m_viewport->showViewState(view);
+  const core::Status shown = m_view->showViewState(view);
   QApplication::restoreOverrideCursor();
   if (!shown)
     QMessageBox::warning(m_parent, tr("Cannot open mesh"), QString::fromStdString(shown.error()));

@@ -22,8 +22,9 @@ class DocumentFiles : public QObject {
   Q_OBJECT
 
  public:
-  // `viewport` is where a preset's view (mesh, camera, light) is shown and read back from.
-  DocumentFiles(MaterialDocument* document, ViewportWidget* viewport, QWidget* dialogParent);
+  // `view` holds a preset's view (mesh, camera, light, environment, display): shown when a
+  // preset is opened, read back when it is saved.
+  DocumentFiles(MaterialDocument* document, ViewDocument* view, QWidget* dialogParent);
   ~DocumentFiles() override;
 
   // Presets in this folder (the bundled samples) are not overwritten: Save asks for a name.
@@ -62,7 +63,7 @@ class DocumentFiles : public QObject {
 
   MaterialDocument* m_document;
   QWidget* m_parent;
-  ViewportWidget* m_viewport;
+  ViewDocument* m_view;
   void showView(const core::ViewState& view);
   QString m_protectedFolder;
   RecoveryStore* m_recovery;

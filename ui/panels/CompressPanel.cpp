@@ -5,7 +5,7 @@
 #include "ui/compare/CompareAllDialog.h"
 #include "ui/compare/CompareDialog.h"
 #include "ui/document/MaterialDocument.h"
-#include "ui/viewport/ViewportWidget.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/window/QtText.h"
 
 #include <QCheckBox>
@@ -47,8 +47,8 @@ QString qualityText(const core::CompressionOutcome& outcome) {
 
 }  // namespace
 
-CompressPanel::CompressPanel(MaterialDocument* document, ViewportWidget* viewport, QWidget* parent)
-    : QWidget(parent), m_document(document), m_viewport(viewport) {
+CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWidget* parent)
+    : QWidget(parent), m_document(document), m_viewDocument(view) {
   m_runner = new CompressionRunner(this);
   auto* grid = new QGridLayout;
   grid->addWidget(new QLabel(tr("<b>Map</b>"), this), 0, 0);
@@ -111,9 +111,9 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewportWidget* viewpor
   m_status->setWordWrap(true);
 
   m_view = new QComboBox(this);
-  m_view->addItem(tr("Original maps"), int(ViewportWidget::CompressedView::Original));
-  m_view->addItem(tr("Compressed maps"), int(ViewportWidget::CompressedView::Compressed));
-  m_view->addItem(tr("Wipe: original | compressed"), int(ViewportWidget::CompressedView::Wipe));
+  m_view->addItem(tr("Original maps"), int(ViewDocument::CompressedView::Original));
+  m_view->addItem(tr("Compressed maps"), int(ViewDocument::CompressedView::Compressed));
+  m_view->addItem(tr("Wipe: original | compressed"), int(ViewDocument::CompressedView::Wipe));
   m_view->setToolTip(tr("What the 3D viewport shows; in the wipe, drag the divider"));
   m_view->setEnabled(false);
 
@@ -170,7 +170,7 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewportWidget* viewpor
   connect(m_saveButton, &QPushButton::clicked, this, &CompressPanel::saveSelected);
   connect(m_results, &QTableWidget::cellDoubleClicked, this, &CompressPanel::openCompare);
   connect(m_view, &QComboBox::currentIndexChanged, this, [this] {
-    m_viewport->setCompressedView(ViewportWidget::CompressedView(m_view->currentData().toInt()));
+    m_viewDocument->setCompressedView(ViewDocument::CompressedView(m_view->currentData().toInt()));
   });
   connect(m_runner, &CompressionRunner::progress, this,
           [this](double fraction, const QString& what) {
@@ -201,7 +201,7 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewportWidget* viewpor
             if (m_view->currentIndex() == 0)
               m_view->setCurrentIndex(2);  // show the wipe straight away
             showOutcomes();
-            updateViewport();
+            showPreviews();
           });
   connect(m_runner, &CompressionRunner::cancelled, this, [this] {
     m_compress->setEnabled(true);
@@ -327,7 +327,7 @@ void CompressPanel::dropStalePreviews() {
   }
   if (dropped) {
     showOutcomes();
-    updateViewport();
+    showPreviews();
   }
 }
 
@@ -366,11 +366,11 @@ void CompressPanel::showOutcomes() {
   m_saveButton->setEnabled(any);
 }
 
-void CompressPanel::updateViewport() {
-  std::vector<ViewportWidget::CompressedPreview> previews;
+void CompressPanel::showPreviews() {
+  std::vector<ViewDocument::CompressedPreview> previews;
   for (const auto& [slot, outcome] : m_outcomes)
     previews.push_back({slot, outcome.job.map, outcome.texture, outcome.decoded});
-  m_viewport->setCompressedPreviews(std::move(previews));
+  m_viewDocument->setCompressedPreviews(std::move(previews));
 }
 
 std::optional<core::MapSlot> CompressPanel::selectedSlot() const {

@@ -31,7 +31,7 @@ class CompressPanel : public QWidget {
   Q_OBJECT
 
  public:
-  CompressPanel(MaterialDocument* document, ViewportWidget* viewport, QWidget* parent = nullptr);
+  CompressPanel(MaterialDocument* document, ViewDocument* view, QWidget* parent = nullptr);
   ~CompressPanel() override;
 
   QComboBox* formatBox(core::MapSlot slot) const { return m_rows[std::size_t(slot)].format; }
@@ -65,11 +65,11 @@ class CompressPanel : public QWidget {
   void writeChoice(core::MapSlot slot);
   void dropStalePreviews();
   void showOutcomes();
-  void updateViewport();
+  void showPreviews();  // the results as the view document's compressed previews
   std::optional<core::MapSlot> selectedSlot() const;
 
   MaterialDocument* m_document;
-  ViewportWidget* m_viewport;
+  ViewDocument* m_viewDocument;
   CompressionRunner* m_runner;
   std::array<Row, core::kMapSlotCount> m_rows;
   QCheckBox* m_mipmaps;

@@ -2,9 +2,9 @@
 #include "ui/panels/EnvironmentPanel.h"
 
 #include "core/shading/EnvironmentMaps.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/panels/ParameterSlider.h"
 #include "ui/tasks/BackgroundTask.h"
-#include "ui/viewport/ViewportWidget.h"
 #include "ui/window/QtText.h"
 
 #include <QComboBox>
@@ -33,9 +33,9 @@ const core::OptionSpec& rotationSpec() {
 
 }  // namespace
 
-EnvironmentPanel::EnvironmentPanel(ViewportWidget* viewport, QWidget* parent)
+EnvironmentPanel::EnvironmentPanel(ViewDocument* view, QWidget* parent)
     : QWidget(parent),
-      m_viewport(viewport),
+      m_view(view),
       m_loader(new BackgroundTask(this)),
       m_source(new QComboBox),
       m_intensity(new QDoubleSpinBox),
@@ -68,17 +68,21 @@ EnvironmentPanel::EnvironmentPanel(ViewportWidget* viewport, QWidget* parent)
   form->addRow(tr("Background"), m_background);
 
   connect(m_source, &QComboBox::activated, this, &EnvironmentPanel::sourceChosen);
-  connect(m_intensity, &QDoubleSpinBox::valueChanged, this, &EnvironmentPanel::applyToViewport);
-  connect(m_rotation, &ParameterSlider::valueEdited, this, &EnvironmentPanel::applyToViewport);
-  connect(m_background, &QComboBox::currentIndexChanged, this, &EnvironmentPanel::applyToViewport);
-  connect(viewport, &ViewportWidget::lightChanged, this, &EnvironmentPanel::showEnvironment);
+  m_intensity->setKeyboardTracking(false);  // a typed value is one edit, applied on Enter
+  connect(m_intensity, &QDoubleSpinBox::valueChanged, this, [this] { applyEnvironment(); });
+  connect(m_rotation, &ParameterSlider::dragStarted, this,
+          [this] { m_dragEdit = m_view->beginInteractiveEdit(); });
+  connect(m_rotation, &ParameterSlider::valueEdited, this,
+          [this](double, bool dragging) { applyEnvironment(dragging); });
+  connect(m_background, &QComboBox::currentIndexChanged, this, [this] { applyEnvironment(); });
+  connect(view, &ViewDocument::environmentChanged, this, &EnvironmentPanel::showEnvironment);
   showEnvironment();
 }
 
 EnvironmentPanel::~EnvironmentPanel() = default;
 
 void EnvironmentPanel::showEnvironment() {
-  const core::Environment& environment = m_viewport->view().environment;
+  const core::Environment& environment = m_view->environment();
   const QSignalBlocker blockSource(m_source), blockIntensity(m_intensity),
       blockBackground(m_background);
   const QString source = QString::fromStdString(environment.source);
@@ -93,14 +97,14 @@ void EnvironmentPanel::showEnvironment() {
       m_background->findData(toQString(core::backgroundName(environment.background))));
 }
 
-void EnvironmentPanel::applyToViewport() {
-  core::Environment environment = m_viewport->view().environment;
+void EnvironmentPanel::applyEnvironment(bool dragging) {
+  core::Environment environment = m_view->environment();
   environment.intensity = float(m_intensity->value());
   environment.rotationDeg = float(m_rotation->value());
   environment.background =
       core::findBackground(m_background->currentData().toString().toStdString())
           .value_or(core::Background::Color);
-  m_viewport->setEnvironment(environment);
+  m_view->setEnvironment(environment, dragging ? m_dragEdit : 0);
 }
 
 void EnvironmentPanel::sourceChosen(int index) {
@@ -111,9 +115,9 @@ void EnvironmentPanel::sourceChosen(int index) {
     return;
   }
   if (core::findBuiltInEnvironment(chosen.toStdString())) {
-    core::Environment environment = m_viewport->view().environment;
+    core::Environment environment = m_view->environment();
     environment.source = chosen.toStdString();
-    m_viewport->setEnvironment(environment);
+    m_view->setEnvironment(environment);
     return;
   }
   loadFile(chosen);  // a file chosen before: read again (it may have changed or gone)
@@ -139,9 +143,9 @@ void EnvironmentPanel::loadFile(const QString& path) {
           Q_EMIT fileLoaded(false, message);
           return;
         }
-        core::Environment environment = m_viewport->view().environment;
+        core::Environment environment = m_view->environment();
         environment.source = path.toStdString();
-        m_viewport->setEnvironment(environment);
+        m_view->setEnvironment(environment);
         Q_EMIT fileLoaded(true, QString());
       });
 }

@@ -16,7 +16,7 @@ class EnvironmentPanel : public QWidget {
   Q_OBJECT
 
  public:
-  explicit EnvironmentPanel(ViewportWidget* viewport, QWidget* parent = nullptr);
+  explicit EnvironmentPanel(ViewDocument* view, QWidget* parent = nullptr);
   ~EnvironmentPanel() override;
 
   QComboBox* sourceBox() const { return m_source; }
@@ -33,16 +33,19 @@ class EnvironmentPanel : public QWidget {
   void fileLoaded(bool ok, const QString& message);
 
  public Q_SLOTS:
-  void showEnvironment();  // reads the viewport's environment into the controls
+  void showEnvironment();  // reads the view document's environment into the controls
 
  private:
-  void applyToViewport();
+  // The controls' intensity, rotation and background as an edit of the view document; a
+  // rotation drag merges into one undo step.
+  void applyEnvironment(bool dragging = false);
   void sourceChosen(int index);
   void chooseFile();
   // The combo's item for a file, added once (after the built-ins, before "File…").
   int fileItem(const QString& path);
 
-  ViewportWidget* m_viewport;
+  ViewDocument* m_view;
+  int m_dragEdit = 0;  // the view document's interactive edit of a rotation drag
   BackgroundTask* m_loader;
   QComboBox* m_source;
   QDoubleSpinBox* m_intensity;

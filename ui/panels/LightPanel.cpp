@@ -2,9 +2,9 @@
 #include "ui/panels/LightPanel.h"
 
 #include "core/image/ColorSpace.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/panels/EnvironmentPanel.h"
 #include "ui/panels/ParameterSlider.h"
-#include "ui/viewport/ViewportWidget.h"
 #include "ui/window/QtText.h"
 
 #include <QCheckBox>
@@ -55,9 +55,9 @@ glm::vec3 toLinear(const QColor& color) {
 
 }  // namespace
 
-LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
+LightPanel::LightPanel(ViewDocument* view, QWidget* parent)
     : QWidget(parent),
-      m_viewport(viewport),
+      m_view(view),
       m_azimuth(new ParameterSlider(azimuthSpec())),
       m_elevation(new ParameterSlider(elevationSpec())),
       m_belowHorizon(new QCheckBox(tr("Below the horizon"))),
@@ -67,7 +67,7 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
       m_color(new QPushButton),
       m_exposure(new QDoubleSpinBox),
       m_toneMapper(new QComboBox),
-      m_environment(new EnvironmentPanel(viewport)) {
+      m_environment(new EnvironmentPanel(view)) {
   auto* column = new QVBoxLayout(this);
   auto* form = new QFormLayout;
   column->addLayout(form);
@@ -119,22 +119,30 @@ LightPanel::LightPanel(ViewportWidget* viewport, QWidget* parent)
   form->addRow(tr("Exposure"), m_exposure);
   form->addRow(tr("Tone mapping"), m_toneMapper);
 
-  connect(m_azimuth, &ParameterSlider::valueEdited, this, &LightPanel::applyToViewport);
-  connect(m_elevation, &ParameterSlider::valueEdited, this, &LightPanel::applyToViewport);
+  // Typed values are applied when confirmed (Enter, focus out), not digit by digit: each
+  // application is an undo step.
+  for (QDoubleSpinBox* box : {m_intensity, m_ambient, m_exposure})
+    box->setKeyboardTracking(false);
+  for (ParameterSlider* slider : {m_azimuth, m_elevation}) {
+    connect(slider, &ParameterSlider::dragStarted, this,
+            [this] { m_dragEdit = m_view->beginInteractiveEdit(); });
+    connect(slider, &ParameterSlider::valueEdited, this,
+            [this](double, bool dragging) { applyLight(dragging); });
+  }
   connect(m_belowHorizon, &QCheckBox::toggled, this, &LightPanel::allowBelowHorizon);
-  connect(m_intensity, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
-  connect(m_ambient, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyToViewport);
+  connect(m_intensity, &QDoubleSpinBox::valueChanged, this, [this] { applyLight(); });
+  connect(m_ambient, &QDoubleSpinBox::valueChanged, this, [this] { applyLight(); });
   connect(m_color, &QPushButton::clicked, this, &LightPanel::chooseColor);
-  const auto applyDisplay = [this] {
-    core::DisplayTransform display;
-    display.exposureEv = float(m_exposure->value());
-    display.toneMapper = core::findToneMapper(m_toneMapper->currentData().toString().toStdString())
-                             .value_or(core::ToneMapper::None);
-    m_viewport->setDisplayTransform(display);
-  };
-  connect(m_exposure, &QDoubleSpinBox::valueChanged, this, applyDisplay);
-  connect(m_toneMapper, &QComboBox::currentIndexChanged, this, applyDisplay);
-  connect(viewport, &ViewportWidget::lightChanged, this, &LightPanel::showLight);
+  connect(m_exposure, &QDoubleSpinBox::valueChanged, this, &LightPanel::applyDisplay);
+  connect(m_toneMapper, &QComboBox::currentIndexChanged, this, &LightPanel::applyDisplay);
+  connect(view, &ViewDocument::lightChanged, this, &LightPanel::showLight);
+  connect(view, &ViewDocument::displayChanged, this, &LightPanel::showLight);
+  connect(view, &ViewDocument::lightBelowHorizonAllowedChanged, this, [this](bool allowed) {
+    const QSignalBlocker block(m_belowHorizon);
+    m_belowHorizon->setChecked(allowed);
+    m_elevation->setRange(allowed ? kLowestElevation : elevationSpec().minimum,
+                          elevationSpec().maximum);
+  });
   showLight();
 }
 
@@ -147,14 +155,10 @@ QSlider* LightPanel::elevationSlider() const {
 }
 
 void LightPanel::showLight() {
-  const core::DirectionalLight& light = m_viewport->view().light;
+  const core::DirectionalLight& light = m_view->light();
   // A light a preset or the CLI put below the horizon is shown as it is.
-  if (light.elevationDeg < -0.5f && !m_belowHorizon->isChecked()) {
-    const QSignalBlocker block(m_belowHorizon);
-    m_belowHorizon->setChecked(true);
-    m_elevation->setRange(kLowestElevation, elevationSpec().maximum);
-    m_viewport->setLightBelowHorizonAllowed(true);
-  }
+  if (light.elevationDeg < -0.5f)
+    m_view->setLightBelowHorizonAllowed(true);
   m_belowHorizonWarning->setVisible(light.elevationDeg < 0.0f);
   const QSignalBlocker blockIntensity(m_intensity), blockAmbient(m_ambient),
       blockExposure(m_exposure), blockToneMapper(m_toneMapper);
@@ -162,7 +166,7 @@ void LightPanel::showLight() {
   m_elevation->setValue(double(std::lround(light.elevationDeg)));
   m_intensity->setValue(light.intensity);
   m_ambient->setValue(light.ambient);
-  const core::DisplayTransform& display = m_viewport->view().display;
+  const core::DisplayTransform& display = m_view->display();
   m_exposure->setValue(display.exposureEv);
   m_toneMapper->setCurrentIndex(
       m_toneMapper->findData(toQString(core::toneMapperName(display.toneMapper))));
@@ -172,33 +176,40 @@ void LightPanel::showLight() {
                              .arg(color.name(), color.lightnessF() > 0.5 ? "black" : "white"));
 }
 
-void LightPanel::applyToViewport() {
-  core::DirectionalLight light = m_viewport->view().light;
+void LightPanel::applyLight(bool dragging) {
+  core::DirectionalLight light = m_view->light();
   light.azimuthDeg = float(m_azimuth->value());
   light.elevationDeg = float(m_elevation->value());
   m_belowHorizonWarning->setVisible(light.elevationDeg < 0.0f);
   light.intensity = float(m_intensity->value());
   light.ambient = float(m_ambient->value());
-  m_viewport->setLight(light);
+  m_view->setLight(light, dragging ? m_dragEdit : 0);
+}
+
+void LightPanel::applyDisplay() {
+  core::DisplayTransform display;
+  display.exposureEv = float(m_exposure->value());
+  display.toneMapper = core::findToneMapper(m_toneMapper->currentData().toString().toStdString())
+                           .value_or(core::ToneMapper::None);
+  m_view->setDisplay(display);
 }
 
 void LightPanel::allowBelowHorizon(bool allowed) {
   m_elevation->setRange(allowed ? kLowestElevation : elevationSpec().minimum,
                         elevationSpec().maximum);
-  m_viewport->setLightBelowHorizonAllowed(allowed);
-  if (!allowed && m_viewport->view().light.elevationDeg < 0.0f)
-    applyToViewport();  // the clamped elevation
+  m_view->setLightBelowHorizonAllowed(allowed);
+  if (!allowed && m_view->light().elevationDeg < 0.0f)
+    applyLight();  // the clamped elevation
 }
 
 void LightPanel::chooseColor() {
   const QColor chosen =
-      QColorDialog::getColor(toQColor(m_viewport->view().light.color), this, tr("Light colour"));
+      QColorDialog::getColor(toQColor(m_view->light().color), this, tr("Light colour"));
   if (!chosen.isValid())
     return;
-  core::DirectionalLight light = m_viewport->view().light;
+  core::DirectionalLight light = m_view->light();
   light.color = toLinear(chosen);
-  m_viewport->setLight(light);
-  showLight();
+  m_view->setLight(light);
 }
 
 }  // namespace relief::ui::inline panels

@@ -1,6 +1,7 @@
 // LightPanel: the directional light's azimuth and elevation, colour, intensity and ambient, the
-// display's exposure and tone mapping, and the environment (EnvironmentPanel). Kept in step with
-// the viewport, where Ctrl+drag moves the same light. The elevation stays between the horizon
+// display's exposure and tone mapping, and the environment (EnvironmentPanel): controls of the
+// view document, which the viewport renders and where Ctrl+drag moves the same light. Each change
+// is an undo step; a slider drag is one. The elevation stays between the horizon
 // and overhead unless "Below the horizon" is ticked (a light from below leaves the surface
 // unlit and the self-shadow view black, which is rarely what an artist wants by accident).
 #pragma once
@@ -22,7 +23,7 @@ class LightPanel : public QWidget {
   Q_OBJECT
 
  public:
-  explicit LightPanel(ViewportWidget* viewport, QWidget* parent = nullptr);
+  explicit LightPanel(ViewDocument* view, QWidget* parent = nullptr);
 
   QSlider* azimuthSlider() const;
   QSlider* elevationSlider() const;
@@ -38,14 +39,17 @@ class LightPanel : public QWidget {
   EnvironmentPanel* environmentPanel() const { return m_environment; }
 
  public Q_SLOTS:
-  void showLight();  // reads the viewport's light into the controls
+  void showLight();  // reads the view document's light and display into the controls
 
  private:
-  void applyToViewport();
+  // The controls' light as an edit of the view document; a slider drag merges into one step.
+  void applyLight(bool dragging = false);
+  void applyDisplay();
   void chooseColor();
   void allowBelowHorizon(bool allowed);
 
-  ViewportWidget* m_viewport;
+  ViewDocument* m_view;
+  int m_dragEdit = 0;  // the view document's interactive edit of the slider being dragged
   ParameterSlider* m_azimuth;
   ParameterSlider* m_elevation;
   QCheckBox* m_belowHorizon;

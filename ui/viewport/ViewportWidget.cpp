@@ -1,20 +1,20 @@
 // ViewportWidget; see ViewportWidget.h.
 #include "ui/viewport/ViewportWidget.h"
 
-#include "core/mesh/MeshImport.h"
-#include "core/mesh/MeshPrimitives.h"
-#include "renderer/ErrorView.h"
 #include "renderer/HeatmapLegend.h"
 #include "renderer/ImageConversion.h"
 #include "renderer/MaterialRenderer.h"
 #include "renderer/SampleCount.h"
 #include "ui/document/MaterialDocument.h"
-#include "ui/tasks/BackgroundTask.h"
+#include "ui/document/ViewDocument.h"
+#include "ui/viewport/ConeMapBuilder.h"
+#include "ui/viewport/ErrorViewTrace.h"
 #include "ui/viewport/InteractionMonitor.h"
+#include "ui/viewport/ViewNavigation.h"
+#include "ui/viewport/ViewportOverlay.h"
 #include "ui/window/QtText.h"
 
 #include <QElapsedTimer>
-#include <QFileInfo>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -26,15 +26,24 @@
 
 namespace relief::ui::inline viewport {
 
-ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
+ViewportWidget::ViewportWidget(MaterialDocument* document, ViewDocument* view, QWidget* parent)
     : QOpenGLWidget(parent),
       m_document(document),
-      m_mesh(core::makePrimitive(core::PrimitiveShape::Plane)),
+      m_view(view),
       m_samplesTimer(new QTimer(this)),
       m_interaction(new InteractionMonitor(this)),
       m_restTimer(new QTimer(this)),
-      m_errorTask(new BackgroundTask(this)),
-      m_coneTask(new BackgroundTask(this)) {
+      m_errorTrace(new ErrorViewTrace(this)),
+      m_coneMaps(new ConeMapBuilder(
+          [this](const core::Material& material, const core::ConeMap& cones) {
+            if (!m_renderer || !isValid())
+              return;
+            makeCurrent();
+            m_renderer->provideConeMap(material, cones);
+            doneCurrent();
+            update();
+          },
+          this)) {
   setMinimumSize(320, 240);
   m_samplesTimer->setSingleShot(true);
   m_samplesTimer->setInterval(kSamplesDelayMs);
@@ -67,17 +76,28 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, QWidget* parent)
   connect(document, &MaterialDocument::techniqueChanged, this, materialTouched);
   connect(document, &MaterialDocument::mapChanged, this, materialTouched);
   connect(document, &MaterialDocument::materialReset, this, materialTouched);
-  connect(m_errorTask, &BackgroundTask::progress, this,
-          [this](double fraction) { Q_EMIT errorViewProgress(int(fraction * 1000.0), 1000); });
-  connect(m_errorTask, &BackgroundTask::cancelled, this,
-          [this] { Q_EMIT errorViewProgress(0, 0); });
+  for (auto signal : {&ViewDocument::cameraChanged, &ViewDocument::lightChanged,
+                      &ViewDocument::environmentChanged, &ViewDocument::displayChanged,
+                      &ViewDocument::debugViewChanged, &ViewDocument::compressedPreviewChanged})
+    connect(view, signal, this, &ViewportWidget::showViewDocument);
+  connect(view, &ViewDocument::meshChanged, this, [this] {
+    m_meshDirty = true;
+    showViewDocument();
+  });
+  connect(view, &ViewDocument::debugViewChanged, m_errorTrace, &ErrorViewTrace::clear);
+  showViewDocument();
+  connect(m_coneMaps, &ConeMapBuilder::building, this, &ViewportWidget::coneMapBuilding);
+  connect(m_errorTrace, &ErrorViewTrace::progress, this, &ViewportWidget::errorViewProgress);
+  connect(m_errorTrace, &ErrorViewTrace::finished, this, [this](const QString& summary) {
+    Q_EMIT errorViewFinished(summary);
+    update();
+  });
 }
 
 ViewportWidget::~ViewportWidget() {
-  m_errorTask->cancel();
-  m_errorTask->waitForFinished();
-  m_coneTask->cancel();
-  m_coneTask->waitForFinished();
+  // Their work ends after this body, and must not reach this half-destroyed widget.
+  disconnect(m_errorTrace, nullptr, this, nullptr);
+  delete m_coneMaps;
   if (context()) {
     // Our slot on aboutToBeDestroyed must not run on a half-destroyed widget.
     disconnect(context(), nullptr, this, nullptr);
@@ -98,99 +118,14 @@ void ViewportWidget::changed() {
   update();
 }
 
-void ViewportWidget::setView(const renderer::RenderView& view) {
-  m_frame.view = view;
-  changed();
-}
-
-void ViewportWidget::setLight(const core::DirectionalLight& light) {
-  m_frame.view.light = light;
-  changed();
-  Q_EMIT lightChanged();
-}
-
-void ViewportWidget::setDisplayTransform(const core::DisplayTransform& display) {
-  m_frame.view.display = display;
-  changed();
-  Q_EMIT lightChanged();
-}
-
-void ViewportWidget::setEnvironment(const core::Environment& environment) {
-  m_frame.view.environment = environment;
-  changed();
-  Q_EMIT lightChanged();
-}
-
-void ViewportWidget::setCamera(const core::OrbitCamera& camera) {
-  m_frame.view.camera = camera;
-  m_framePending = false;
-  changed();
-}
-
-void ViewportWidget::setMesh(core::Mesh mesh) {
-  m_mesh = std::move(mesh);
-  m_meshDirty = true;
-  m_framePending = true;
-  changed();
-}
-
-core::Result<QString> ViewportWidget::showMesh(const QString& nameOrPath) {
-  if (const auto shape = core::findPrimitiveShape(nameOrPath.toStdString())) {
-    setMesh(core::makePrimitive(*shape));
-    m_meshSource = toQString(core::primitiveShapeName(*shape));
-    Q_EMIT meshSourceChanged(m_meshSource);
-    return QString();
-  }
-  core::Result<core::ImportedMesh> imported = core::importMesh(nameOrPath.toStdString());
-  if (!imported)
-    return core::makeError(imported.error());
-  const QString summary =
-      tr("%1 triangles, tangents %2")
-          .arg(imported->mesh.triangleCount())
-          .arg(imported->tangentsFromFile ? tr("from the file") : tr("computed"));
-  setMesh(std::move(imported->mesh));
-  m_meshSource = QFileInfo(nameOrPath).absoluteFilePath();
-  Q_EMIT meshSourceChanged(m_meshSource);
-  return summary;
-}
-
-core::ViewState ViewportWidget::viewState() const {
-  return {m_frame.view.camera, m_frame.view.light, m_meshSource.toStdString(), m_frame.view.display,
-          m_frame.view.environment};
-}
-
-core::Status ViewportWidget::showViewState(const core::ViewState& state) {
-  core::Status meshShown;
-  const QString mesh = QString::fromStdString(state.mesh);
-  if (!mesh.isEmpty() && mesh != m_meshSource) {
-    if (core::Result<QString> shown = showMesh(mesh); !shown)
-      meshShown = core::makeError(shown.error());
-  }
-  if (state.camera)
-    setCamera(*state.camera);
-  else
-    frameMesh();
-  if (state.light)
-    setLight(*state.light);
-  if (state.display)
-    setDisplayTransform(*state.display);
-  if (state.environment)
-    setEnvironment(*state.environment);
-  return meshShown;
-}
-
-void ViewportWidget::frameMesh() {
-  const float aspect =
-      height() > 0 ? float(width()) / float(height()) : core::OrbitCamera::kDefaultAspect;
-  m_frame.view.camera.frame(m_mesh.bounds(), aspect);
-  changed();
-}
-
-void ViewportWidget::setDebugView(core::DebugView view) {
-  m_frame.debugView = view;
-  m_errorMap.reset();
-  m_errorImage = {};
-  changed();
+void ViewportWidget::showViewDocument() {
+  m_frame.view.camera = m_view->camera();
+  m_frame.view.light = m_view->light();
+  m_frame.view.environment = m_view->environment();
+  m_frame.view.display = m_view->display();
+  m_frame.debugView = m_view->debugView();
+  if (!m_framing)
+    changed();
 }
 
 void ViewportWidget::setComparing(bool on) {
@@ -213,49 +148,28 @@ const core::Material* ViewportWidget::comparisonMaterial() const {
   return m_frame.split ? &m_frame.split->material : nullptr;
 }
 
-void ViewportWidget::setCompressedPreviews(std::vector<CompressedPreview> previews) {
-  m_previews = std::move(previews);
-  changed();
-}
-
 void ViewportWidget::setNativeCompressedUploads(bool native) {
   m_nativeCompressed = native;
   changed();
 }
 
-void ViewportWidget::setCompressedView(CompressedView view) {
-  m_compressedView = view;
-  changed();
-}
-
-bool ViewportWidget::showsCompressed() const {
-  return m_compressedView != CompressedView::Original && !m_previews.empty();
-}
-
 std::pair<core::Material, renderer::FrameSettings> ViewportWidget::shownFrame() const {
   renderer::FrameSettings frame = m_frame;
-  if (!showsCompressed())
+  if (!m_view->showsCompressed())
     return {m_document->material(), frame};
   // The compressed view replaces a held A/B comparison while it is on.
-  if (m_compressedView == CompressedView::Wipe) {
-    frame.split = renderer::SplitComparison{compressedMaterial(), m_dividerFraction};
+  if (m_view->compressedView() == ViewDocument::CompressedView::Wipe) {
+    frame.split = renderer::SplitComparison{m_view->withCompressedPreviews(m_document->material()),
+                                            m_dividerFraction};
     return {m_document->material(), frame};
   }
   frame.split.reset();
-  return {compressedMaterial(), frame};
+  return {m_view->withCompressedPreviews(m_document->material()), frame};
 }
 
 bool ViewportWidget::hasDivider() const {
-  return showsCompressed() ? m_compressedView == CompressedView::Wipe : m_frame.split.has_value();
-}
-
-core::Material ViewportWidget::compressedMaterial() const {
-  core::Material material = m_document->material();
-  for (const CompressedPreview& preview : m_previews) {
-    if (material.map(preview.slot).image == preview.source)
-      material.setCompressedMap(preview.slot, preview.texture, preview.decoded);
-  }
-  return material;
+  return m_view->showsCompressed() ? m_view->compressedView() == ViewDocument::CompressedView::Wipe
+                                   : m_frame.split.has_value();
 }
 
 void ViewportWidget::setDividerFraction(float fraction) {
@@ -283,26 +197,8 @@ void ViewportWidget::releaseGl() {
 }
 
 void ViewportWidget::ensureConeMap(const core::Material& material) {
-  if (m_renderer->coneMapReady(material))
-    return;
-  const renderer::TracedHeightKey key = renderer::tracedHeightKey(material);
-  if (m_coneBuilding == key)
-    return;
-  m_coneBuilding = key;
-  Q_EMIT coneMapBuilding(true);
-  // The snapshot keeps the height's images alive, so its key still names them when it is done.
-  m_coneTask->run<core::ConeMap>(
-      [material](const core::WorkControl&) { return renderer::buildTracedConeMap(material); },
-      [this, material](core::ConeMap&& cones) {
-        m_coneBuilding.reset();
-        Q_EMIT coneMapBuilding(false);
-        if (!m_renderer || !isValid())
-          return;
-        makeCurrent();
-        m_renderer->provideConeMap(material, cones);
-        doneCurrent();
-        update();
-      });
+  if (!m_renderer->coneMapReady(material))
+    m_coneMaps->build(material);
 }
 
 void ViewportWidget::initializeGL() {
@@ -318,7 +214,7 @@ void ViewportWidget::initializeGL() {
     return;
   }
   m_renderer->setDeferredConeMaps(true);
-  m_coneBuilding.reset();
+  m_coneMaps->forget();
   m_meshDirty = true;
   Q_EMIT rendererReady(QString::fromStdString(m_renderer->rendererDescription()));
 }
@@ -332,31 +228,12 @@ void ViewportWidget::paintGL() {
   }
   QElapsedTimer timer;
   timer.start();
-  if (m_framePending) {
-    // Framing needs the real aspect ratio, which is only known once the widget has a size.
-    const float aspect = float(width()) / float(std::max(height(), 1));
-    m_frame.view.camera.frame(m_mesh.bounds(), aspect);
-    m_framePending = false;
-  }
-  if (m_meshDirty) {
-    m_renderer->setMesh(m_mesh);
-    m_meshDirty = false;
-  }
-  m_renderer->setNativeCompressedUploads(m_nativeCompressed);
-  auto [material, frame] = shownFrame();
-  m_renderer->setMaterial(material);
-  ensureConeMap(material);
-  if (frame.split)
-    ensureConeMap(frame.split->material);
-  std::optional<core::Material> compressed;
-  if (showsCompressed())
-    compressed = frame.split ? frame.split->material : material;
+  auto [frame, compressed] = prepareFrame();
   const qreal ratio = devicePixelRatioF();
   const int pixelWidth = int(std::lround(width() * ratio));
   const int pixelHeight = int(std::lround(height() * ratio));
-  if (m_frame.debugView == core::DebugView::Error && m_errorStale) {
+  if (m_frame.debugView == core::DebugView::Error && m_errorStale)
     startErrorView(pixelWidth, pixelHeight);
-  }
   if (frame.debugView == core::DebugView::Error)
     frame.debugView = core::DebugView::Shading;
   // While the user drags, a frame that would take longer than the budget is drawn smaller and
@@ -371,26 +248,99 @@ void ViewportWidget::paintGL() {
   // first, each within the frame budget, over the stretched reduced frame: the picture sharpens
   // band by band, and input is served between bands instead of waiting for a whole slow frame.
   const bool refining = scale >= 1.0f && m_reducedShown;
-  core::Status status;
-  if (refining) {
-    if (m_refinedFrom < 0)
-      m_refinedFrom = pixelHeight;  // GL rows count from the bottom: none refined yet
-    const int first = std::max(
-        m_refinedFrom - m_resolution.rowsWithinBudget(pixelWidth, pixelHeight, kMaxBands), 0);
-    status = m_renderer->renderRows(frame, pixelWidth, pixelHeight, first, m_refinedFrom);
-    if (status) {
-      m_refinedFrom = first;
-      m_renderer->showRefined(pixelWidth, pixelHeight, first, defaultFramebufferObject());
-    }
-  } else {
-    status = m_renderer->renderReduced(frame, pixelWidth, pixelHeight, scale,
-                                       defaultFramebufferObject());
-  }
+  const core::Status status = refining
+                                  ? drawRefinementBand(frame, pixelWidth, pixelHeight)
+                                  : m_renderer->renderReduced(frame, pixelWidth, pixelHeight, scale,
+                                                              defaultFramebufferObject());
   if (!status) {
     m_reducedShown = false;
     m_refinedFrom = -1;
     Q_EMIT renderError(QString::fromStdString(status.error()));
   }
+  reportRendererState(compressed);
+  // Waiting for the GPU makes the status-bar number the real frame cost. The viewport only
+  // draws on demand, so the stall never costs an animation frame.
+  context()->functions()->glFinish();
+  const double milliseconds = double(timer.nsecsElapsed()) / 1.0e6;
+  const float shownScale =
+      refining ? finishRefinementBand()
+               : finishReducedFrame(milliseconds, pixelWidth, pixelHeight, scale, status.ok());
+  m_lastFrameScale = shownScale;
+  m_samplesTimer->start();  // every frame restarts the wait for the view to rest
+  // The renderer binds its maps to units 0 to 15 and leaves the last one active. Qt's OpenGL
+  // paint engine remembers the unit it last activated (0) instead of asking GL, so it would
+  // bind its own textures (an image, a gradient's colour table) to our active unit and sample
+  // unit 0, which holds the colour map: the error view showed the bricks' colour map instead
+  // of its heat map, and legends drew grey.
+  context()->functions()->glActiveTexture(GL_TEXTURE0);
+  paintOverlays();
+  Q_EMIT frameRendered(milliseconds, double(shownScale));
+}
+
+std::pair<renderer::FrameSettings, std::optional<core::Material>> ViewportWidget::prepareFrame() {
+  if (m_view->framingPending()) {
+    // Framing needs the real aspect ratio, which is only known once the widget has a size.
+    m_framing = true;
+    m_view->frameMesh(float(width()) / float(std::max(height(), 1)));
+    m_framing = false;
+  }
+  if (m_meshDirty) {
+    m_renderer->setMesh(m_view->mesh());
+    m_meshDirty = false;
+  }
+  m_renderer->setNativeCompressedUploads(m_nativeCompressed);
+  auto [material, frame] = shownFrame();
+  m_renderer->setMaterial(material);
+  ensureConeMap(material);
+  if (frame.split)
+    ensureConeMap(frame.split->material);
+  std::optional<core::Material> compressed;
+  if (m_view->showsCompressed())
+    compressed = frame.split ? frame.split->material : material;
+  return {frame, compressed};
+}
+
+core::Status ViewportWidget::drawRefinementBand(const renderer::FrameSettings& frame,
+                                                int pixelWidth, int pixelHeight) {
+  if (m_refinedFrom < 0)
+    m_refinedFrom = pixelHeight;  // GL rows count from the bottom: none refined yet
+  const int first = std::max(
+      m_refinedFrom - m_resolution.rowsWithinBudget(pixelWidth, pixelHeight, kMaxBands), 0);
+  core::Status status =
+      m_renderer->renderRows(frame, pixelWidth, pixelHeight, first, m_refinedFrom);
+  if (status) {
+    m_refinedFrom = first;
+    m_renderer->showRefined(pixelWidth, pixelHeight, first, defaultFramebufferObject());
+  }
+  return status;
+}
+
+float ViewportWidget::finishRefinementBand() {
+  // A reduced frame being refined is reported at its scale until the last band.
+  if (m_refinedFrom > 0) {
+    update();  // the next band
+    return m_lastFrameScale;
+  }
+  m_reducedShown = false;
+  m_refinedFrom = -1;
+  return 1.0f;
+}
+
+float ViewportWidget::finishReducedFrame(double milliseconds, int pixelWidth, int pixelHeight,
+                                         float scale, bool drawn) {
+  const auto [drawnWidth, drawnHeight] =
+      renderer::MaterialRenderer::reducedSize(pixelWidth, pixelHeight, scale);
+  m_resolution.recordFrame(milliseconds, double(drawnWidth) * double(drawnHeight));
+  m_reducedShown = drawn && scale < 1.0f;
+  m_refinedFrom = -1;
+  // The rest is counted from the end of the reduced frame (and again from each later change):
+  // a frame slower than kRestMs must not make the next change's frame a full one.
+  if (scale < 1.0f)
+    m_restTimer->start();
+  return scale;
+}
+
+void ViewportWidget::reportRendererState(const std::optional<core::Material>& compressed) {
   if (const QString problem = QString::fromStdString(m_renderer->environmentError());
       problem != m_environmentProblem) {
     m_environmentProblem = problem;
@@ -403,43 +353,6 @@ void ViewportWidget::paintGL() {
     m_uploadSummary = summary;
     Q_EMIT compressedUploadChanged(summary);
   }
-  // Waiting for the GPU makes the status-bar number the real frame cost. The viewport only
-  // draws on demand, so the stall never costs an animation frame.
-  context()->functions()->glFinish();
-  const double milliseconds = double(timer.nsecsElapsed()) / 1.0e6;
-  // What the screen now shows: a reduced frame, a reduced frame being refined (reported at its
-  // scale until the last band), or a full frame.
-  float shownScale = scale;
-  if (refining) {
-    const bool done = m_refinedFrom <= 0;
-    shownScale = done ? 1.0f : m_lastFrameScale;
-    if (done) {
-      m_reducedShown = false;
-      m_refinedFrom = -1;
-    } else {
-      update();  // the next band
-    }
-  } else {
-    const auto [drawnWidth, drawnHeight] =
-        renderer::MaterialRenderer::reducedSize(pixelWidth, pixelHeight, scale);
-    m_resolution.recordFrame(milliseconds, double(drawnWidth) * double(drawnHeight));
-    m_reducedShown = status && scale < 1.0f;
-    m_refinedFrom = -1;
-  }
-  m_lastFrameScale = shownScale;
-  // The rest is counted from the end of the reduced frame (and again from each later change):
-  // a frame slower than kRestMs must not make the next change's frame a full one.
-  if (scale < 1.0f && !refining)
-    m_restTimer->start();
-  m_samplesTimer->start();  // every frame restarts the wait for the view to rest
-  // The renderer binds its maps to units 0 to 15 and leaves the last one active. Qt's OpenGL
-  // paint engine remembers the unit it last activated (0) instead of asking GL, so it would
-  // bind its own textures (an image, a gradient's colour table) to our active unit and sample
-  // unit 0, which holds the colour map: the error view showed the bricks' colour map instead
-  // of its heat map, and legends drew grey.
-  context()->functions()->glActiveTexture(GL_TEXTURE0);
-  paintOverlays();
-  Q_EMIT frameRendered(milliseconds, double(shownScale));
 }
 
 void ViewportWidget::measureSamples(int pixelWidth, int pixelHeight) {
@@ -453,107 +366,53 @@ void ViewportWidget::measureSamples(int pixelWidth, int pixelHeight) {
     Q_EMIT samplesMeasured(count->mean);
 }
 
+const std::optional<core::UvErrorMap>& ViewportWidget::errorMap() const {
+  return m_errorTrace->map();
+}
+
 void ViewportWidget::startErrorView(int pixelWidth, int pixelHeight) {
   m_errorStale = false;
-  m_errorTask->cancel();
-  m_errorMap.reset();
-  m_errorImage = {};
-  renderer::FrameSettings frame = m_frame;
-  auto inputs = renderer::renderErrorViewInputs(*m_renderer, frame, pixelWidth, pixelHeight);
-  if (!inputs) {
-    Q_EMIT renderError(QString::fromStdString(inputs.error()));
-    return;
-  }
   // The exact trace of every pixel takes seconds on the CPU; progress in the status bar.
-  m_errorTask->run<core::UvErrorMap>(
-      [inputs = std::make_shared<renderer::ErrorViewInputs>(std::move(inputs).value())](
-          const core::WorkControl& control) {
-        return core::computeUvErrorMap(
-            inputs->finalUv, inputs->eyeRays, inputs->field,
-            [&control](int done, int total) {
-              if (done % 16 == 0)
-                control.report(double(done) / double(std::max(total, 1)));
-            },
-            control.cancel);
-      },
-      [this](core::UvErrorMap&& map) {
-        m_errorMap = std::move(map);
-        m_errorImage = renderer::toDisplayImage(
-            core::colorizeErrorMap(*m_errorMap, core::kErrorDisplayTexels));
-        Q_EMIT errorViewProgress(0, 0);
-        Q_EMIT errorViewFinished(QString::fromStdString(core::describeUvError(*m_errorMap)));
-        update();
-      });
+  if (core::Status started = m_errorTrace->start(*m_renderer, m_frame, pixelWidth, pixelHeight);
+      !started)
+    Q_EMIT renderError(QString::fromStdString(started.error()));
 }
 
 void ViewportWidget::paintOverlays() {
-  const bool errorView = m_frame.debugView == core::DebugView::Error;
+  ViewportOverlay overlay;
+  overlay.errorView = m_frame.debugView == core::DebugView::Error;
+  overlay.errorImage = &m_errorTrace->image();
+  overlay.errorMap = m_errorTrace->map() ? &*m_errorTrace->map() : nullptr;
   const core::Material& material = m_document->material();
-  const auto legend = renderer::legendFor(m_frame.debugView, material, core::kErrorDisplayTexels);
-  if (!hasDivider() && !legend && !errorView)
-    return;  // nothing drawn over the frame
-  QPainter painter(this);
-  if (errorView) {
-    if (!m_errorImage.isNull()) {
-      painter.drawImage(rect(), m_errorImage);
-    } else {
-      painter.setPen(Qt::white);
-      painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignTop | Qt::AlignLeft,
-                       tr("Tracing the exact intersections…"));
-    }
-    if (m_errorMap) {
-      painter.setPen(Qt::white);
-      painter.drawText(rect().adjusted(12, 12, -12, -12),
-                       Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap,
-                       tr("UV error against the exact trace: %1")
-                           .arg(QString::fromStdString(core::describeUvError(*m_errorMap))));
-    }
-  }
-  if (legend)
-    renderer::drawHeatmapLegend(painter, rect(), *legend);
+  overlay.legend = renderer::legendFor(m_frame.debugView, material, core::kErrorDisplayTexels);
   if (hasDivider()) {
-    const int x = dividerX();
-    painter.setPen(QPen(QColor(255, 255, 255, 200), 2));
-    painter.drawLine(x, 0, x, height());
-    QString left, right;
-    if (showsCompressed()) {
+    overlay.dividerX = dividerX();
+    if (m_view->showsCompressed()) {
       QStringList formats;
-      for (const CompressedPreview& preview : m_previews) {
+      for (const ViewDocument::CompressedPreview& preview : m_view->compressedPreviews())
         formats << toQString(core::textureFormatInfo(preview.texture->format).name).toUpper();
-      }
-      left = tr("Original");
-      right = tr("Compressed: %1").arg(formats.join(QStringLiteral(", ")));
+      overlay.leftLabel = tr("Original");
+      overlay.rightLabel = tr("Compressed: %1").arg(formats.join(QStringLiteral(", ")));
     } else {
       const auto label = [](const core::Material& m) {
         return toQString(core::techniqueName(m.technique()));
       };
-      left = tr("A (live): %1").arg(label(material));
-      right = tr("B (held): %1").arg(label(m_frame.split->material));
+      overlay.leftLabel = tr("A (live): %1").arg(label(material));
+      overlay.rightLabel = tr("B (held): %1").arg(label(m_frame.split->material));
     }
-    painter.setPen(Qt::white);
-    painter.drawText(QRect(8, 8, std::max(x - 16, 0), 20), Qt::AlignLeft, left);
-    painter.drawText(QRect(x + 8, 8, std::max(width() - x - 16, 0), 20), Qt::AlignRight, right);
   }
+  if (overlay.isEmpty())
+    return;  // nothing drawn over the frame
+  QPainter painter(this);
+  paintViewportOverlay(painter, rect(), overlay);
 }
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   m_lastPos = event->position().toPoint();
-  const Qt::KeyboardModifiers modifiers = event->modifiers();
-  if (event->button() == Qt::LeftButton) {
-    if (hasDivider() && std::abs(m_lastPos.x() - dividerX()) <= kDividerGrabPixels) {
-      m_drag = DragMode::Divider;
-    } else if (modifiers & Qt::ControlModifier) {
-      m_drag = DragMode::Light;
-    } else if (modifiers & Qt::ShiftModifier) {
-      m_drag = DragMode::Pan;
-    } else {
-      m_drag = DragMode::Orbit;
-    }
-  } else if (event->button() == Qt::MiddleButton) {
-    m_drag = DragMode::Pan;
-  } else if (event->button() == Qt::RightButton) {
-    m_drag = DragMode::Zoom;
-  }
+  const bool onDivider = hasDivider() && std::abs(m_lastPos.x() - dividerX()) <= kDividerGrabPixels;
+  m_drag = dragModeFor(event->button(), event->modifiers(), onDivider);
+  if (m_drag == DragMode::Light)
+    m_lightEdit = m_view->beginInteractiveEdit();  // the drag is one undo step
   event->accept();
 }
 
@@ -565,34 +424,16 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   }
   const QPoint delta = pos - m_lastPos;
   m_lastPos = pos;
-  const float dx = float(delta.x());
-  const float dy = float(delta.y());
-  core::OrbitCamera& camera = m_frame.view.camera;
-  switch (m_drag) {
-    case DragMode::Orbit:
-      camera.orbit(-dx * kOrbitDegreesPerPixel, dy * kOrbitDegreesPerPixel);
-      break;
-    case DragMode::Light: {
-      core::DirectionalLight& light = m_frame.view.light;
-      light.azimuthDeg = std::fmod(light.azimuthDeg - dx * kOrbitDegreesPerPixel + 360.0f, 360.0f);
-      light.elevationDeg = std::clamp(light.elevationDeg - dy * kOrbitDegreesPerPixel,
-                                      m_lightBelowHorizon ? -90.0f : 0.0f, 90.0f);
-      Q_EMIT lightChanged();
-      break;
-    }
-    case DragMode::Pan:
-      camera.pan(dx / float(std::max(height(), 1)), dy / float(std::max(height(), 1)));
-      break;
-    case DragMode::Zoom:
-      camera.zoom(std::exp(dy * 0.01f));
-      break;
-    case DragMode::Divider:
-      setDividerFraction(float(pos.x()) / float(std::max(width(), 1)));
-      return;
-    case DragMode::None:
-      return;
+  if (m_drag == DragMode::Divider) {
+    setDividerFraction(float(pos.x()) / float(std::max(width(), 1)));
+  } else if (m_drag == DragMode::Light) {
+    m_view->setLight(draggedLight(m_view->light(), float(delta.x()), float(delta.y()),
+                                  m_view->lightBelowHorizonAllowed()),
+                     m_lightEdit);
+  } else if (m_drag != DragMode::None) {
+    m_view->setCamera(
+        draggedCamera(m_view->camera(), m_drag, float(delta.x()), float(delta.y()), height()));
   }
-  changed();
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
@@ -601,9 +442,7 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
-  // One wheel notch (120 units) zooms by about 12%.
-  m_frame.view.camera.zoom(std::exp(-float(event->angleDelta().y()) / 120.0f * 0.12f));
-  changed();
+  m_view->setCamera(wheeledCamera(m_view->camera(), event->angleDelta().y()));
   event->accept();
 }
 

@@ -10,6 +10,7 @@
 #include "ui/document/DocumentFiles.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/document/PresetLibrary.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/panels/CompressPanel.h"
 #include "ui/panels/GeneratePanel.h"
 #include "ui/panels/LightPanel.h"
@@ -21,6 +22,7 @@
 #include "ui/window/QtText.h"
 #include "ui/window/ViewToolBar.h"
 #include "ui/window/ViewportImageExport.h"
+#include "ui/window/ViewportStatus.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -34,7 +36,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QProgressBar>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -46,18 +47,15 @@ namespace relief::ui::inline window {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_document(new MaterialDocument(this)),
-      m_viewport(new ViewportWidget(m_document)),
-      m_progress(new QProgressBar),
-      m_frameTime(new QLabel),
-      m_samples(new QLabel),
-      m_rendererLabel(new QLabel) {
+      m_view(new ViewDocument(m_document->undoStack(), this)),
+      m_viewport(new ViewportWidget(m_document, m_view)) {
   setWindowTitle(tr("Relief"));
   setAcceptDrops(true);
   setCentralWidget(m_viewport);
   setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
-  m_files = new DocumentFiles(m_document, m_viewport, this);
+  m_files = new DocumentFiles(m_document, m_view, this);
   m_mapLoader = new MapFileLoader(m_document, this);
-  m_imageExport = new ViewportImageExport(m_viewport, this);
+  m_imageExport = new ViewportImageExport(m_view, m_viewport, this);
   const auto showStatus = [this](const QString& message, int timeout) {
     statusBar()->showMessage(message, timeout);
   };
@@ -65,80 +63,22 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_mapLoader, &MapFileLoader::statusMessage, this, showStatus);
   connect(m_imageExport, &ViewportImageExport::statusMessage, this, showStatus);
   createDocks();
-  m_toolBar = new ViewToolBar(m_viewport, this);
+  m_toolBar = new ViewToolBar(m_view, m_viewport, this);
   addToolBar(m_toolBar);
   connect(m_toolBar, &ViewToolBar::meshRequested, this, &MainWindow::showMesh);
   createMenus();
 
-  m_progress->setMaximumWidth(220);
-  m_progress->setVisible(false);
-  statusBar()->addPermanentWidget(m_progress);
-  connect(m_viewport, &ViewportWidget::errorViewProgress, this, [this](int done, int total) {
-    m_progress->setVisible(total > 0);
-    m_progress->setRange(0, std::max(total, 1));
-    m_progress->setValue(done);
-  });
-  connect(m_viewport, &ViewportWidget::coneMapBuilding, this, [this](bool building) {
-    if (building) {
-      statusBar()->showMessage(
-          tr("Building the cone map; drawn with the quadtree (the same exact surface) meanwhile"));
-    } else {
-      statusBar()->clearMessage();
-    }
-  });
-  connect(m_viewport, &ViewportWidget::environmentProblem, this, [this](const QString& message) {
-    if (message.isEmpty()) {
-      statusBar()->clearMessage();
-    } else {
-      statusBar()->showMessage(tr("%1; lit by the uniform white environment instead").arg(message));
-    }
-  });
-  connect(m_viewport, &ViewportWidget::errorViewFinished, this, [this](const QString& summary) {
-    statusBar()->showMessage(tr("UV error against the exact trace: %1").arg(summary), 15000);
-  });
-
-  m_frameTime->setToolTip(tr(
-      "CPU time of the last frame, including waiting for the GPU. While you drag, frames are "
-      "drawn at a reduced resolution that keeps them fluid; the full one follows when you stop."));
-  m_frameTime->setMinimumWidth(110);
-  m_frameTime->setObjectName(QStringLiteral("frameTime"));
-  m_samples->setObjectName(QStringLiteral("samplesPerPixel"));
-  m_samples->setToolTip(
-      tr("Height samples (texel fetches) per covered pixel, the mean, measured once the view "
-         "rests; relief-cli render --stats measures the same"));
-  m_compressedLabel = new QLabel(this);
-  m_compressedLabel->setToolTip(
-      tr("Compressed maps are uploaded as blocks (glCompressedTexImage2D) when the driver has "
-         "the format, otherwise decoded by Relief"));
-  m_compressedLabel->hide();
-  statusBar()->addPermanentWidget(m_compressedLabel);
-  connect(m_viewport, &ViewportWidget::compressedUploadChanged, this, [this](const QString& text) {
-    m_compressedLabel->setText(text);
-    m_compressedLabel->setVisible(!text.isEmpty());
-  });
-  statusBar()->addPermanentWidget(m_rendererLabel);
-  statusBar()->addPermanentWidget(m_samples);
-  statusBar()->addPermanentWidget(m_frameTime);
-  connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::showFrameTime);
-  connect(m_viewport, &ViewportWidget::samplesMeasured, this,
-          [this](double mean) { m_samples->setText(tr("%1 samples/px").arg(mean, 0, 'f', 1)); });
-  // The GPU's name alone ("llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa
-  // 22.3.6" took half the bar and cut off every message); the whole in the tooltip.
-  connect(m_viewport, &ViewportWidget::rendererReady, this, [this](const QString& description) {
-    m_rendererLabel->setText(description.section(QStringLiteral(" ("), 0, 0).section(',', 0, 0));
-    m_rendererLabel->setToolTip(description);
-  });
-  // Messages about the material that was open do not outlive it.
-  connect(m_document, &MaterialDocument::materialReset, statusBar(), &QStatusBar::clearMessage);
+  m_status = new ViewportStatus(m_viewport, m_document, statusBar());
   connect(m_viewport, &ViewportWidget::renderError, this, [this](const QString& message) {
     QMessageBox::critical(this, tr("Relief: the viewport cannot render"), message);
   });
   connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
   connect(m_document, &MaterialDocument::materialReset, this, &MainWindow::updateTitle);
   connect(m_document, &MaterialDocument::fileSaved, this, &MainWindow::updateTitle);
-  m_viewport->setLight(settings::viewportLight());
-  m_viewport->setDisplayTransform(settings::viewportDisplay());
-  m_viewport->setEnvironment(settings::viewportEnvironment());
+  // The last session's light and look, not as undo steps: a new window has no history.
+  m_view->applyLight(settings::viewportLight());
+  m_view->applyDisplay(settings::viewportDisplay());
+  m_view->applyEnvironment(settings::viewportEnvironment());
   m_viewport->setNativeCompressedUploads(settings::nativeCompressedUploads());
   resize(1400, 860);
   restoreWindowState();
@@ -171,13 +111,13 @@ void MainWindow::createDocks() {
   addDock(tr("Maps"), QStringLiteral("mapsDock"), m_maps, Qt::LeftDockWidgetArea);
   QDockWidget* parametersDock = addDock(tr("Parameters"), QStringLiteral("parametersDock"),
                                         m_parameters, Qt::RightDockWidgetArea);
-  m_light = new LightPanel(m_viewport);
+  m_light = new LightPanel(m_view);
   QDockWidget* lightDock =
       addDock(tr("Light"), QStringLiteral("lightDock"), m_light, Qt::LeftDockWidgetArea);
   m_generate = new GeneratePanel(m_document);
   QDockWidget* generateDock =
       addDock(tr("Generate"), QStringLiteral("generateDock"), m_generate, Qt::RightDockWidgetArea);
-  m_compressPanel = new CompressPanel(m_document, m_viewport);
+  m_compressPanel = new CompressPanel(m_document, m_view);
   QDockWidget* compressDock = addDock(tr("Compress"), QStringLiteral("compressDock"),
                                       m_compressPanel, Qt::RightDockWidgetArea);
   connect(m_compressPanel, &CompressPanel::statusMessage, this,
@@ -191,7 +131,7 @@ void MainWindow::createDocks() {
       addDock(tr("Presets"), QStringLiteral("presetsDock"), m_library, Qt::LeftDockWidgetArea);
   connect(m_library, &PresetLibrary::openRequested, this, &MainWindow::openPreset);
   connect(m_library, &PresetLibrary::saveCurrentRequested, this,
-          [this] { m_library->saveCurrent(m_document->toPreset(m_viewport->viewState())); });
+          [this] { m_library->saveCurrent(m_document->toPreset(m_view->viewState())); });
   connect(
       m_library, &PresetLibrary::statusMessage, this,
       [this](const QString& message, int timeout) { statusBar()->showMessage(message, timeout); });
@@ -252,7 +192,7 @@ void MainWindow::createMenus() {
   edit->addAction(tr("Reset &Parameters"), m_document, &MaterialDocument::resetParameters);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  view->addAction(tr("&Frame Mesh"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameMesh);
+  view->addAction(tr("&Frame Mesh"), QKeySequence(tr("F")), m_view, &ViewDocument::requestFraming);
   QMenu* meshes = view->addMenu(tr("&Mesh"));
   int shortcut = 1;
   for (core::PrimitiveShape shape : core::allPrimitiveShapes()) {
@@ -306,15 +246,8 @@ void MainWindow::showControlsHelp() {
   QMessageBox::information(this, tr("Viewport controls"), m_viewport->toolTip());
 }
 
-void MainWindow::showFrameTime(double milliseconds, double scale) {
-  if (scale < 1.0) {
-    // A reduced frame while the user drags; the full one follows when the input rests.
-    m_frameTime->setText(tr("frame %1 ms at %2% resolution")
-                             .arg(milliseconds, 0, 'f', 1)
-                             .arg(int(std::lround(scale * 100.0))));
-  } else {
-    m_frameTime->setText(tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
-  }
+QLabel* MainWindow::compressedUploadLabel() const {
+  return m_status->compressedUploadLabel();
 }
 
 void MainWindow::updateTitle() {
@@ -344,7 +277,7 @@ QAction* MainWindow::compareAction() const {
 }
 
 const QString& MainWindow::meshSource() const {
-  return m_viewport->meshSource();
+  return m_view->meshSource();
 }
 
 bool MainWindow::openPreset(const QString& path) {
@@ -373,7 +306,7 @@ void MainWindow::openFiles(const QStringList& paths) {
 
 bool MainWindow::showMesh(const QString& nameOrPath) {
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  const core::Result<QString> shown = m_viewport->showMesh(nameOrPath);
+  const core::Result<QString> shown = m_view->showMesh(nameOrPath);
   QApplication::restoreOverrideCursor();
   if (!shown) {
     QMessageBox::warning(this, tr("Cannot open mesh"), QString::fromStdString(shown.error()));
@@ -440,9 +373,9 @@ void MainWindow::saveWindowState() {
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());
-  settings::setViewportLight(m_viewport->view().light);
-  settings::setViewportDisplay(m_viewport->view().display);
-  settings::setViewportEnvironment(m_viewport->view().environment);
+  settings::setViewportLight(m_view->light());
+  settings::setViewportDisplay(m_view->display());
+  settings::setViewportEnvironment(m_view->environment());
 }
 
 void MainWindow::showShortcuts() {
@@ -459,7 +392,7 @@ void MainWindow::showPreferences() {
 }
 
 void MainWindow::showExportDialog() {
-  ExportDialog dialog(m_document->toPreset(m_viewport->viewState()), m_viewport->mesh(), this);
+  ExportDialog dialog(m_document->toPreset(m_view->viewState()), m_view->mesh(), this);
   dialog.exec();
 }
 

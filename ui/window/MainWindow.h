@@ -16,7 +16,6 @@
 class QAction;
 class QComboBox;
 class QLabel;
-class QProgressBar;
 
 namespace relief::ui::inline window {
 
@@ -28,13 +27,14 @@ class MainWindow : public QMainWindow {
   ~MainWindow() override;
 
   MaterialDocument* document() const { return m_document; }
+  ViewDocument* viewDocument() const { return m_view; }
   ViewportWidget* viewport() const { return m_viewport; }
   ParameterPanel* parameterPanel() const { return m_parameters; }
   LightPanel* lightPanel() const { return m_light; }
   GeneratePanel* generatePanel() const { return m_generate; }
   CompressPanel* compressPanel() const { return m_compressPanel; }
   // How the compressed previews reach the GPU ("... uploaded natively"), shown in the status bar.
-  QLabel* compressedUploadLabel() const { return m_compressedLabel; }
+  QLabel* compressedUploadLabel() const;
   QComboBox* debugViewBox() const;
   QComboBox* meshBox() const;
   QAction* compareAction() const;
@@ -71,7 +71,6 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createMenus();
   void chooseMesh();
-  void showFrameTime(double milliseconds, double scale);
   void updateTitle();
   void showControlsHelp();
   void showExportDialog();
@@ -80,18 +79,15 @@ class MainWindow : public QMainWindow {
   void saveWindowState();
 
   MaterialDocument* m_document;
+  ViewDocument* m_view;
   ViewportWidget* m_viewport;
   ParameterPanel* m_parameters = nullptr;
   MapsPanel* m_maps = nullptr;
   LightPanel* m_light = nullptr;
   GeneratePanel* m_generate = nullptr;
   CompressPanel* m_compressPanel = nullptr;
-  QLabel* m_compressedLabel = nullptr;
   ViewToolBar* m_toolBar = nullptr;
-  QProgressBar* m_progress;
-  QLabel* m_frameTime;
-  QLabel* m_samples;  // height samples per pixel (ViewportWidget::samplesMeasured)
-  QLabel* m_rendererLabel;
+  ViewportStatus* m_status = nullptr;
   DocumentFiles* m_files = nullptr;
   PresetLibrary* m_library = nullptr;
   MapFileLoader* m_mapLoader = nullptr;

@@ -3,6 +3,7 @@
 
 #include "core/mesh/MeshPrimitives.h"
 #include "core/view/DebugView.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/QtText.h"
 
@@ -13,8 +14,9 @@
 
 namespace relief::ui::inline window {
 
-ViewToolBar::ViewToolBar(ViewportWidget* viewport, QWidget* parent)
+ViewToolBar::ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* parent)
     : QToolBar(tr("View"), parent),
+      m_view(view),
       m_viewport(viewport),
       m_debugView(new QComboBox),
       m_meshBox(new QComboBox) {
@@ -22,16 +24,19 @@ ViewToolBar::ViewToolBar(ViewportWidget* viewport, QWidget* parent)
   setMovable(false);
 
   m_debugView->setObjectName(QStringLiteral("debugView"));
-  for (core::DebugView view : core::allDebugViews()) {
-    m_debugView->addItem(toQString(core::debugViewLabel(view)),
-                         toQString(core::debugViewName(view)));
+  for (core::DebugView debugView : core::allDebugViews()) {
+    m_debugView->addItem(toQString(core::debugViewLabel(debugView)),
+                         toQString(core::debugViewName(debugView)));
   }
   m_debugView->setToolTip(
       tr("What the viewport shows: the shaded material or a diagnostic view "
          "(the CLI's --view). \"Samples per pixel\" is the cost; \"UV "
          "error\" compares every pixel with the exact intersection."));
-  connect(m_debugView, &QComboBox::activated, this, [this](int index) {
-    m_viewport->setDebugView(core::allDebugViews()[std::size_t(index)]);
+  connect(m_debugView, &QComboBox::activated, this,
+          [this](int index) { m_view->setDebugView(core::allDebugViews()[std::size_t(index)]); });
+  connect(view, &ViewDocument::debugViewChanged, this, [this] {
+    m_debugView->setCurrentIndex(
+        m_debugView->findData(toQString(core::debugViewName(m_view->debugView()))));
   });
   addWidget(new QLabel(tr(" View ")));
   addWidget(m_debugView);
@@ -70,10 +75,11 @@ ViewToolBar::ViewToolBar(ViewportWidget* viewport, QWidget* parent)
     m_viewport->holdCurrentAsComparison();
     m_compare->setChecked(true);
   });
-  connect(m_viewport, &ViewportWidget::meshSourceChanged, this, &ViewToolBar::showMeshSource);
+  connect(view, &ViewDocument::meshChanged, this, [this] { showMeshSource(m_view->meshSource()); });
 }
 
-// The toolbar's mesh box follows the viewport: a primitive's entry, or the file's name last.
+// The toolbar's mesh box follows the view document: a primitive's entry, or the file's name
+// last.
 void ViewToolBar::showMeshSource(const QString& source) {
   const int customIndex = int(core::allPrimitiveShapes().size());
   if (const auto shape = core::findPrimitiveShape(source.toStdString())) {

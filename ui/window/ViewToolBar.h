@@ -1,6 +1,7 @@
 // ViewToolBar: the main window's "View" toolbar — what the viewport shows (the shaded material
-// or a diagnostic view), the mesh it is shown on, and the A|B comparison. It drives the viewport
-// directly and follows it: the mesh box shows the viewport's mesh whoever changed it.
+// or a diagnostic view), the mesh it is shown on, and the A|B comparison. The debug view and the
+// mesh are the view document's, and the boxes follow it whoever changed them (a preset, undo);
+// the comparison is the viewport's own.
 #pragma once
 
 #include "ui/Forward.h"
@@ -17,7 +18,7 @@ class ViewToolBar : public QToolBar {
   Q_OBJECT
 
  public:
-  explicit ViewToolBar(ViewportWidget* viewport, QWidget* parent = nullptr);
+  ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* parent = nullptr);
 
   QComboBox* debugViewBox() const { return m_debugView; }
   QComboBox* meshBox() const { return m_meshBox; }
@@ -31,6 +32,7 @@ class ViewToolBar : public QToolBar {
  private:
   void showMeshSource(const QString& source);
 
+  ViewDocument* m_view;
   ViewportWidget* m_viewport;
   QComboBox* m_debugView;
   QComboBox* m_meshBox;

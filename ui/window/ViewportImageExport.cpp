@@ -3,6 +3,7 @@
 
 #include "core/image/ImageIO.h"
 #include "renderer/OffscreenRenderer.h"
+#include "ui/document/ViewDocument.h"
 #include "ui/viewport/ViewportWidget.h"
 #include "ui/window/AppSettings.h"
 
@@ -18,8 +19,9 @@
 
 namespace relief::ui::inline window {
 
-ViewportImageExport::ViewportImageExport(ViewportWidget* viewport, QWidget* dialogParent)
-    : QObject(dialogParent), m_viewport(viewport), m_parent(dialogParent) {}
+ViewportImageExport::ViewportImageExport(ViewDocument* view, ViewportWidget* viewport,
+                                         QWidget* dialogParent)
+    : QObject(dialogParent), m_view(view), m_viewport(viewport), m_parent(dialogParent) {}
 
 bool ViewportImageExport::save(const QString& path, int width, int height) {
   QApplication::setOverrideCursor(Qt::WaitCursor);
@@ -34,7 +36,7 @@ bool ViewportImageExport::save(const QString& path, int width, int height) {
                                  .arg(offscreen.value()->maxSize())
                                  .toStdString());
     }
-    offscreen.value()->setMesh(m_viewport->mesh());
+    offscreen.value()->setMesh(m_view->mesh());
     const auto [material, frame] = m_viewport->shownFrame();
     offscreen.value()->setMaterial(material);
     return offscreen.value()->render(frame, width, height);

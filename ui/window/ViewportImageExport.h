@@ -17,7 +17,8 @@ class ViewportImageExport : public QObject {
   Q_OBJECT
 
  public:
-  ViewportImageExport(ViewportWidget* viewport, QWidget* dialogParent);
+  // The mesh is `view`'s; the material, camera and frame as `viewport` draws them.
+  ViewportImageExport(ViewDocument* view, ViewportWidget* viewport, QWidget* dialogParent);
 
   bool save(const QString& path, int width, int height);
   // Asks for the size (twice the viewport by default) and the file, then saves.
@@ -27,6 +28,7 @@ class ViewportImageExport : public QObject {
   void statusMessage(const QString& message, int timeoutMs);
 
  private:
+  ViewDocument* m_view;
   ViewportWidget* m_viewport;
   QWidget* m_parent;
 };
