@@ -51,9 +51,18 @@ std::optional<HeatmapLegend> legendFor(core::DebugView view, const core::Materia
                            QStringLiteral("map minified (mip level %1 or more): not counted")
                                .arg(double(core::kErrorMaxMipLevel))};
     }
-    default:
+    // Views of values, not of a scale: no legend.
+    case core::DebugView::Shading:
+    case core::DebugView::Height:
+    case core::DebugView::Normal:
+    case core::DebugView::Uv:
+    case core::DebugView::Offset:
+    case core::DebugView::Shadow:
+    case core::DebugView::Tangents:
+    case core::DebugView::Depth:
       return std::nullopt;
   }
+  return std::nullopt;  // not reached: every view is handled above
 }
 
 void drawHeatmapLegend(QPainter& painter, const QRect& area, const HeatmapLegend& legend) {

@@ -2,38 +2,12 @@
 #include "renderer/ShaderVariant.h"
 
 namespace relief::renderer {
-namespace {
-
-const char* techniqueDefine(core::Technique technique) {
-  switch (technique) {
-    case core::Technique::Normal:
-      return "TECHNIQUE_NORMAL";
-    case core::Technique::Parallax:
-      return "TECHNIQUE_PARALLAX";
-    case core::Technique::ParallaxLimited:
-      return "TECHNIQUE_PARALLAX_LIMITED";
-    case core::Technique::Steep:
-      return "TECHNIQUE_STEEP";
-    case core::Technique::Pom:
-      return "TECHNIQUE_POM";
-    case core::Technique::Relief:
-      return "TECHNIQUE_RELIEF";
-    case core::Technique::Quadtree:
-      return "TECHNIQUE_QUADTREE";
-    case core::Technique::Cone:
-      return "TECHNIQUE_CONE";
-    case core::Technique::Displacement:
-      return "TECHNIQUE_DISPLACEMENT";
-  }
-  return "TECHNIQUE_NORMAL";
-}
-
-}  // namespace
 
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
                                                FrameOutput output) {
   using core::ParamId;
-  std::vector<std::string> defines = {techniqueDefine(material.technique())};
+  std::vector<std::string> defines = {
+      std::string(core::techniqueShaderDefine(material.technique()))};
   const auto shadowMode = core::ShadowMode(int(material.parameter(ParamId::ShadowMode)));
   if (shadowMode == core::ShadowMode::Hard)
     defines.emplace_back("SHADOW_HARD");

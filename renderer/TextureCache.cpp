@@ -18,28 +18,22 @@ namespace {
 using core::Image;
 using core::MapSlot;
 
-// The value an empty slot samples as: mid-grey colour, a flat normal, the top surface,
-// no occlusion, no roughness (classic reads 0 as "the shininess"), and a metallic texel of 1
-// (pbr multiplies the metallic factor by it).
+// The value an empty slot samples as: mid-grey colour, a flat normal, and for data the slot's
+// neutral value (core/material/MapSlot.cpp).
 std::shared_ptr<const Image> neutralImage(MapSlot slot) {
   auto image = std::make_shared<Image>(1, 1, 4, core::mapSlotColorSpace(slot));
   float* texel = image->pixel(0, 0);
-  const float colorGrey = 0.7f;
-  switch (slot) {
-    case MapSlot::Color:
-      std::fill(texel, texel + 3, colorGrey);
+  switch (core::mapSlotTexels(slot)) {
+    case core::MapTexels::Colour:
+      std::fill(texel, texel + 3, 0.7f);
       break;
-    case MapSlot::Normal:
+    case core::MapTexels::Normal:
       texel[0] = 0.5f;
       texel[1] = 0.5f;
       texel[2] = 1.0f;
       break;
-    case MapSlot::Height:
-    case MapSlot::AmbientOcclusion:
-    case MapSlot::Metallic:  // pbr multiplies the metallic factor by it
-      std::fill(texel, texel + 3, 1.0f);
-      break;
-    default:
+    case core::MapTexels::Scalar:
+      std::fill(texel, texel + 3, core::mapSlotNeutralValue(slot));
       break;
   }
   texel[3] = 1.0f;
@@ -84,17 +78,17 @@ namespace {
 
 // Storage format of a slot's texture and the pixel layout its texels are given in.
 void setSlotFormat(QOpenGLTexture& texture, MapSlot slot) {
-  switch (slot) {
-    case MapSlot::Color:
+  switch (core::mapSlotTexels(slot)) {
+    case core::MapTexels::Colour:
       // Colour is sRGB-encoded; sRGB storage is exact for 8-bit sources and lets the sampler
       // filter in linear light. 16-bit colour sources lose their extra bits here.
       texture.setFormat(QOpenGLTexture::SRGB8_Alpha8);
       break;
-    case MapSlot::Normal:
+    case core::MapTexels::Normal:
       // 16-bit unsigned normalised: exact for 8- and 16-bit files, 4x finer than 8 bits for EXR.
       texture.setFormat(QOpenGLTexture::RGBA16_UNorm);
       break;
-    default:
+    case core::MapTexels::Scalar:
       // Height, AO, roughness: one float channel keeps 16-bit and float files exact.
       texture.setFormat(QOpenGLTexture::R32F);
       break;
@@ -104,18 +98,18 @@ void setSlotFormat(QOpenGLTexture& texture, MapSlot slot) {
 void uploadLevel(QOpenGLTexture& texture, int level, const Image& image, MapSlot slot) {
   QOpenGLPixelTransferOptions unpack;
   unpack.setAlignment(1);
-  switch (slot) {
-    case MapSlot::Color: {
+  switch (core::mapSlotTexels(slot)) {
+    case core::MapTexels::Colour: {
       const auto texels = pack<std::uint8_t>(image, 4, toUnorm8);
       texture.setData(level, QOpenGLTexture::RGBA, QOpenGLTexture::UInt8, texels.data(), &unpack);
       break;
     }
-    case MapSlot::Normal: {
+    case core::MapTexels::Normal: {
       const auto texels = pack<std::uint16_t>(image, 4, toUnorm16);
       texture.setData(level, QOpenGLTexture::RGBA, QOpenGLTexture::UInt16, texels.data(), &unpack);
       break;
     }
-    default: {
+    case core::MapTexels::Scalar: {
       // A one-channel image is already the texture's layout: uploaded without a copy, which
       // for an 8192x8192 height map saves 256 MiB at the peak.
       if (image.channels() == 1) {
@@ -130,14 +124,15 @@ void uploadLevel(QOpenGLTexture& texture, int level, const Image& image, MapSlot
 }
 
 std::pair<QOpenGLTexture::PixelFormat, QOpenGLTexture::PixelType> transferFormat(MapSlot slot) {
-  switch (slot) {
-    case MapSlot::Color:
+  switch (core::mapSlotTexels(slot)) {
+    case core::MapTexels::Colour:
       return {QOpenGLTexture::RGBA, QOpenGLTexture::UInt8};
-    case MapSlot::Normal:
+    case core::MapTexels::Normal:
       return {QOpenGLTexture::RGBA, QOpenGLTexture::UInt16};
-    default:
+    case core::MapTexels::Scalar:
       return {QOpenGLTexture::Red, QOpenGLTexture::Float32};
   }
+  return {QOpenGLTexture::Red, QOpenGLTexture::Float32};  // not reached
 }
 
 std::unique_ptr<QOpenGLTexture> newMapTexture(int width, int height, int levels, MapSlot slot) {

@@ -3,7 +3,7 @@
 
 #include "CliCommon.h"
 #include "core/image/Image.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

@@ -6,7 +6,7 @@
 namespace relief::cli {
 namespace {
 
-// Light intensities a preset may hold (core/material/MaterialPreset.cpp reads the same range).
+// Light intensities a preset may hold (core/preset/MaterialPreset.cpp reads the same range).
 constexpr double kMaxLightIntensity = 100.0;
 
 std::optional<int> applyDisplay(const QCommandLineParser& parser, core::DisplayTransform& display) {

@@ -134,9 +134,11 @@ std::string formatOptionValue(const OptionSpec& spec, double value) {
       return value != 0.0 ? "true" : "false";
     case ParamKind::Choice:
       return std::string(spec.choices[std::size_t(std::clamp(value, 0.0, spec.maximum))]);
-    default:
+    case ParamKind::Float:
+    case ParamKind::Int:
       return formatNumber(value);
   }
+  return formatNumber(value);  // not reached: every kind is handled above
 }
 
 }  // namespace relief::core::inline base

@@ -276,7 +276,20 @@ void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& te
       }
       return;
     }
-    default:
+    // Other families are dispatched to their own codecs (Compressor.cpp) and never reach here.
+    case TextureFormat::Etc1:
+    case TextureFormat::Etc2:
+    case TextureFormat::Etc2A:
+    case TextureFormat::EacR11:
+    case TextureFormat::EacRg11:
+    case TextureFormat::Astc4x4:
+    case TextureFormat::Astc5x5:
+    case TextureFormat::Astc6x6:
+    case TextureFormat::Astc8x8:
+    case TextureFormat::Astc4x4Normal:
+    case TextureFormat::Astc5x5Normal:
+    case TextureFormat::Astc6x6Normal:
+    case TextureFormat::Astc8x8Normal:
       return;
   }
 }

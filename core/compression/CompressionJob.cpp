@@ -69,14 +69,15 @@ Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
 }
 
 TextureFormat suggestedFormat(MapSlot slot, int channels) {
-  switch (slot) {
-    case MapSlot::Color:
+  switch (mapSlotTexels(slot)) {
+    case MapTexels::Colour:
       return channels == 4 ? TextureFormat::Bc7 : TextureFormat::Bc1;
-    case MapSlot::Normal:
+    case MapTexels::Normal:
       return TextureFormat::Bc5;
-    default:
+    case MapTexels::Scalar:
       return TextureFormat::Bc4;
   }
+  return TextureFormat::Bc4;  // not reached: every kind is handled above
 }
 
 }  // namespace relief::core::inline compression

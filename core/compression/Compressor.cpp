@@ -116,15 +116,16 @@ std::uint64_t CompressedTexture::byteSize() const {
 
 bool formatSuitsSlot(TextureFormat format, MapSlot slot) {
   const FormatLayout layout = textureFormatInfo(format).layout;
-  switch (slot) {
-    case MapSlot::Color:
+  switch (mapSlotTexels(slot)) {
+    case MapTexels::Colour:
       return layout == FormatLayout::Rgb || layout == FormatLayout::Rgba;
-    case MapSlot::Normal:
+    case MapTexels::Normal:
       return layout != FormatLayout::R;
-    default:
+    case MapTexels::Scalar:
       return layout == FormatLayout::R || layout == FormatLayout::Rgb ||
              (isAstc(format) && layout == FormatLayout::Rgba);
   }
+  return false;  // not reached: every kind is handled above
 }
 
 std::vector<TextureFormat> formatsForSlot(MapSlot slot) {
@@ -158,9 +159,11 @@ MapSlot likelySlot(TextureFormat format) {
     case FormatLayout::NormalRg:
     case FormatLayout::NormalAg:
       return MapSlot::Normal;
-    default:
+    case FormatLayout::Rgb:
+    case FormatLayout::Rgba:
       return MapSlot::Color;
   }
+  return MapSlot::Color;  // not reached: every layout is handled above
 }
 
 int likelySourceChannels(TextureFormat format) {

@@ -201,101 +201,62 @@ void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]
 constexpr int kEacAscending[8] = {3, 2, 1, 0, 4, 5, 6, 7};
 constexpr float kPruneMargin = 1.5f;
 
-void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
-                      CompressionQuality quality, std::uint8_t out[8]) {
-  // Target values in the code's units: 0..2047 (R11) or 0..255 (alpha). Texels outside the
-  // image (not in validMask) count with weight 0.
-  const float scale = elevenBit ? 2047.0f : 255.0f;
-  float target[16], weight[16];
-  float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
-  for (int t = 0; t < 16; ++t) {
-    target[t] = std::clamp(values[t], 0.0f, 1.0f) * scale;
-    weight[t] = (validMask & (1 << t)) ? 1.0f : 0.0f;
-    if (weight[t] > 0.0f) {
-      low = std::min(low, target[t]);
-      high = std::max(high, target[t]);
+// The search for one EAC block's base, multiplier and table: the block's targets in the code's
+// units, and the best candidate so far.
+class EacSearch {
+ public:
+  EacSearch(const float values[16], int validMask, bool elevenBit)
+      : m_elevenBit(elevenBit), m_unit(elevenBit ? 8.0f : 1.0f) {
+    // Target values in the code's units: 0..2047 (R11) or 0..255 (alpha). Texels outside the
+    // image (not in validMask) count with weight 0.
+    const float scale = elevenBit ? 2047.0f : 255.0f;
+    for (int t = 0; t < 16; ++t) {
+      m_target[t] = std::clamp(values[t], 0.0f, 1.0f) * scale;
+      m_weight[t] = (validMask & (1 << t)) ? 1.0f : 0.0f;
+      if (m_weight[t] > 0.0f) {
+        m_low = std::min(m_low, m_target[t]);
+        m_high = std::max(m_high, m_target[t]);
+      }
     }
+    if (validMask == 0)
+      m_low = m_high = 0.0f;
+    m_validCount = float(std::max(1, std::popcount(unsigned(validMask))));
   }
-  if (validMask == 0)
-    low = high = 0.0f;
-  const float validCount = float(std::max(1, std::popcount(unsigned(validMask))));
-  // The value a (base, multiplier, modifier) decodes to, in the same units.
-  const auto decoded = [elevenBit](int base, int multiplier, int modifier) {
-    if (elevenBit) {
+
+  bool exact() const { return m_bestError <= 0.0f; }
+
+  // The value a (base, multiplier, modifier) decodes to, in the target's units.
+  float decoded(int base, int multiplier, int modifier) const {
+    if (m_elevenBit) {
       const int step = multiplier == 0 ? modifier : modifier * multiplier * 8;
       return float(std::clamp(base * 8 + 4 + step, 0, 2047));
     }
     return float(clamp255(base + modifier * multiplier));
-  };
-  // How far the wider search reaches around the ideal multiplier and the centred base.
-  const int multiplierReach = quality == CompressionQuality::Fast     ? 0
-                              : quality == CompressionQuality::Normal ? 1
-                                                                      : 2;
-  const int baseReach = quality == CompressionQuality::Best ? 3 : 1;
-  float bestError = std::numeric_limits<float>::max();
-  int bestBase = 0, bestMultiplier = 1, bestTable = 0;
-  const float unit = elevenBit ? 8.0f : 1.0f;  // value units per base step and per multiplier
+  }
+
   // One table's search: multipliers within multiplierReach of the one the block's range asks
   // for, bases within baseReach of the one that centres the table on the range, then the
   // least-squares base.
-  const auto searchTable = [&](int table) {
+  void searchTable(int table, int multiplierReach, int baseReach) {
     const int* modifiers = kEacModifiers[table];
     const int span = modifiers[7] - modifiers[3];  // largest minus smallest modifier
-    const int ideal =
-        std::clamp(int(std::lround((high - low) / (float(span) * unit))), elevenBit ? 0 : 1, 15);
-    const int firstMultiplier = std::max(elevenBit ? 0 : 1, ideal - multiplierReach);
+    const int ideal = std::clamp(int(std::lround((m_high - m_low) / (float(span) * m_unit))),
+                                 m_elevenBit ? 0 : 1, 15);
+    const int firstMultiplier = std::max(m_elevenBit ? 0 : 1, ideal - multiplierReach);
     const int lastMultiplier = std::min(15, ideal + multiplierReach);
     for (int multiplier = firstMultiplier; multiplier <= lastMultiplier; ++multiplier) {
       // Base that puts the table's middle on the range's middle.
       const float middleModifier = 0.5f * float(modifiers[7] + modifiers[3]);
-      const float centre = 0.5f * (low + high) -
-                           middleModifier * (multiplier == 0 ? 1.0f : float(multiplier) * unit);
-      const int centreBase = int(std::lround(elevenBit ? (centre - 4.0f) / 8.0f : centre));
-      // The error of one base, and (in `offset`) the mean distance from each texel to the
-      // value it picked, which says where the least-squares base for those picks lies. A
-      // candidate whose first eight texels already reach kPruneMargin times the best error so
-      // far stops there (infinity; the eight-texel halves still vectorise): it cannot win, and
-      // a least-squares step from it rarely would. Measured on the 2048^2 bricks maps (tools/
-      // bench-compress): RG11 normal 1.12 s before, 0.86 s after, the same 0.454 degrees;
-      // R11 15.6% above the exhaustive search against 15.5%. A margin of 1 (prune whatever
-      // cannot win by itself) skipped refinements that would have: 17.7%.
-      const auto evaluate = [&](int base, float& offset, bool prunable) {
-        float sorted[8], midpoint[7];
-        for (int k = 0; k < 8; ++k)
-          sorted[k] = decoded(base, multiplier, modifiers[kEacAscending[k]]);
-        for (int k = 0; k < 7; ++k)
-          midpoint[k] = 0.5f * (sorted[k] + sorted[k + 1]);
-        float error = 0.0f, shift = 0.0f;
-        for (int half = 0; half < 2; ++half) {
-          for (int t = 8 * half; t < 8 * half + 8; ++t) {
-            int rank = 0;
-            for (int k = 0; k < 7; ++k)
-              rank += target[t] > midpoint[k] ? 1 : 0;
-            const float difference = sorted[rank] - target[t];
-            error += weight[t] * difference * difference;
-            shift += weight[t] * difference;
-          }
-          if (prunable && half == 0 && error >= kPruneMargin * bestError)
-            return std::numeric_limits<float>::infinity();
-        }
-        offset = shift / validCount;
-        return error;
-      };
-      const auto consider = [&](int base, float error) {
-        if (error < bestError) {
-          bestError = error;
-          bestBase = base;
-          bestMultiplier = multiplier;
-          bestTable = table;
-        }
-      };
+      const float centre = 0.5f * (m_low + m_high) -
+                           middleModifier * (multiplier == 0 ? 1.0f : float(multiplier) * m_unit);
+      const int centreBase = int(std::lround(m_elevenBit ? (centre - 4.0f) / 8.0f : centre));
       float bestHere = std::numeric_limits<float>::max(), offsetHere = 0.0f;
       int baseHere = centreBase;
       for (int base = std::max(0, centreBase - baseReach);
            base <= std::min(255, centreBase + baseReach); ++base) {
         float offset = 0.0f;
-        const float error = evaluate(base, offset, true);
-        consider(base, error);
+        const float error = evaluate(modifiers, multiplier, base, offset);
+        consider(table, multiplier, base, error);
         if (error < bestHere) {
           bestHere = error;
           baseHere = base;
@@ -304,35 +265,98 @@ void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
       }
       // Least-squares refinement: move the base by the picks' mean distance (in base steps)
       // and try there too, unless the window already covered it.
-      const int refined = std::clamp(baseHere - int(std::lround(offsetHere / unit)), 0, 255);
+      const int refined = std::clamp(baseHere - int(std::lround(offsetHere / m_unit)), 0, 255);
       if (std::abs(refined - centreBase) > baseReach) {
         float unused = 0.0f;
-        consider(refined, evaluate(refined, unused, true));
+        consider(table, multiplier, refined, evaluate(modifiers, multiplier, refined, unused));
       }
     }
-  };
-  // Every table (narrowing to the best few tables after a first pass lost 2% of normal-map
-  // angle accuracy for 25% of speed, measured with tools/bench-compress). Stops once exact.
-  for (int table = 0; table < 16 && bestError > 0.0f; ++table)
-    searchTable(table);
-  // The indices of the winner (the search kept only its error). The midpoint count is written
-  // out in both places: a shared palette type measured 15% slower in the search.
-  const int* modifiers = kEacModifiers[bestTable];
-  float sorted[8];
-  for (int k = 0; k < 8; ++k)
-    sorted[k] = decoded(bestBase, bestMultiplier, modifiers[kEacAscending[k]]);
-  std::uint64_t word = std::uint64_t(bestBase) << 56 | std::uint64_t(bestMultiplier) << 52 |
-                       std::uint64_t(bestTable) << 48;
-  for (int x = 0; x < 4; ++x) {
-    for (int y = 0; y < 4; ++y) {
-      const float value = target[y * 4 + x];
-      int rank = 0;
-      for (int k = 0; k < 7; ++k)
-        rank += value > 0.5f * (sorted[k] + sorted[k + 1]) ? 1 : 0;
-      word |= std::uint64_t(kEacAscending[rank]) << (45 - 3 * (x * 4 + y));
+  }
+
+  // The winner as the block's 64 bits. The midpoint count is written out here and in evaluate:
+  // a shared palette type measured 15% slower in the search.
+  std::uint64_t word() const {
+    const int* modifiers = kEacModifiers[m_bestTable];
+    float sorted[8];
+    for (int k = 0; k < 8; ++k)
+      sorted[k] = decoded(m_bestBase, m_bestMultiplier, modifiers[kEacAscending[k]]);
+    std::uint64_t word = std::uint64_t(m_bestBase) << 56 | std::uint64_t(m_bestMultiplier) << 52 |
+                         std::uint64_t(m_bestTable) << 48;
+    for (int x = 0; x < 4; ++x) {
+      for (int y = 0; y < 4; ++y) {
+        const float value = m_target[y * 4 + x];
+        int rank = 0;
+        for (int k = 0; k < 7; ++k)
+          rank += value > 0.5f * (sorted[k] + sorted[k + 1]) ? 1 : 0;
+        word |= std::uint64_t(kEacAscending[rank]) << (45 - 3 * (x * 4 + y));
+      }
+    }
+    return word;
+  }
+
+ private:
+  // The error of one base, and (in `offset`) the mean distance from each texel to the value it
+  // picked, which says where the least-squares base for those picks lies. A candidate whose
+  // first eight texels already reach kPruneMargin times the best error so far stops there
+  // (infinity; the eight-texel halves still vectorise): it cannot win, and a least-squares
+  // step from it rarely would. Measured on the 2048^2 bricks maps (tools/bench-compress): RG11
+  // normal 1.12 s before, 0.86 s after, the same 0.454 degrees; R11 15.6% above the exhaustive
+  // search against 15.5%. A margin of 1 (prune whatever cannot win by itself) skipped
+  // refinements that would have: 17.7%.
+  float evaluate(const int* modifiers, int multiplier, int base, float& offset) const {
+    float sorted[8], midpoint[7];
+    for (int k = 0; k < 8; ++k)
+      sorted[k] = decoded(base, multiplier, modifiers[kEacAscending[k]]);
+    for (int k = 0; k < 7; ++k)
+      midpoint[k] = 0.5f * (sorted[k] + sorted[k + 1]);
+    float error = 0.0f, shift = 0.0f;
+    for (int half = 0; half < 2; ++half) {
+      for (int t = 8 * half; t < 8 * half + 8; ++t) {
+        int rank = 0;
+        for (int k = 0; k < 7; ++k)
+          rank += m_target[t] > midpoint[k] ? 1 : 0;
+        const float difference = sorted[rank] - m_target[t];
+        error += m_weight[t] * difference * difference;
+        shift += m_weight[t] * difference;
+      }
+      if (half == 0 && error >= kPruneMargin * m_bestError)
+        return std::numeric_limits<float>::infinity();
+    }
+    offset = shift / m_validCount;
+    return error;
+  }
+
+  void consider(int table, int multiplier, int base, float error) {
+    if (error < m_bestError) {
+      m_bestError = error;
+      m_bestBase = base;
+      m_bestMultiplier = multiplier;
+      m_bestTable = table;
     }
   }
-  writeBigEndian(word, out);
+
+  bool m_elevenBit;
+  float m_unit;  // value units per base step and per multiplier
+  float m_target[16], m_weight[16];
+  float m_low = std::numeric_limits<float>::max(), m_high = std::numeric_limits<float>::lowest();
+  float m_validCount = 1.0f;
+  float m_bestError = std::numeric_limits<float>::max();
+  int m_bestBase = 0, m_bestMultiplier = 1, m_bestTable = 0;
+};
+
+void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
+                      CompressionQuality quality, std::uint8_t out[8]) {
+  EacSearch search(values, validMask, elevenBit);
+  // How far the wider search reaches around the ideal multiplier and the centred base.
+  const int multiplierReach = quality == CompressionQuality::Fast     ? 0
+                              : quality == CompressionQuality::Normal ? 1
+                                                                      : 2;
+  const int baseReach = quality == CompressionQuality::Best ? 3 : 1;
+  // Every table (narrowing to the best few tables after a first pass lost 2% of normal-map
+  // angle accuracy for 25% of speed, measured with tools/bench-compress). Stops once exact.
+  for (int table = 0; table < 16 && !search.exact(); ++table)
+    search.searchTable(table, multiplierReach, baseReach);
+  writeBigEndian(search.word(), out);
 }
 
 void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const BlockTexels& texels,
@@ -358,8 +382,26 @@ void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const Bloc
       encodeEacChannel(values, validMask, false, quality, out);
       out += 8;
       break;
-    default:
+    case TextureFormat::Etc1:
+    case TextureFormat::Etc2:
       break;
+    // Other families are dispatched to their own codecs (Compressor.cpp) and never reach here.
+    case TextureFormat::Bc1:
+    case TextureFormat::Bc2:
+    case TextureFormat::Bc3:
+    case TextureFormat::Bc4:
+    case TextureFormat::Bc5:
+    case TextureFormat::Dxt5nm:
+    case TextureFormat::Bc7:
+    case TextureFormat::Astc4x4:
+    case TextureFormat::Astc5x5:
+    case TextureFormat::Astc6x6:
+    case TextureFormat::Astc8x8:
+    case TextureFormat::Astc4x4Normal:
+    case TextureFormat::Astc5x5Normal:
+    case TextureFormat::Astc6x6Normal:
+    case TextureFormat::Astc8x8Normal:
+      return;
   }
   // ETC1 colour (android-libetc1 searches every mode it has; it has one quality).
   etc1_byte rgb[16 * 3];
@@ -434,12 +476,30 @@ void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& t
         texels[t][3] = values[t];
       }
       return;
-    default:
+    case TextureFormat::Etc1:
+    case TextureFormat::Etc2:
       decodeEtc2Rgb(in, rgb);
       for (int t = 0; t < 16; ++t) {
         std::copy(rgb[t], rgb[t] + 3, texels[t]);
         texels[t][3] = 1.0f;
       }
+      return;
+    // Other families are dispatched to their own codecs (Compressor.cpp) and never reach here.
+    case TextureFormat::Bc1:
+    case TextureFormat::Bc2:
+    case TextureFormat::Bc3:
+    case TextureFormat::Bc4:
+    case TextureFormat::Bc5:
+    case TextureFormat::Dxt5nm:
+    case TextureFormat::Bc7:
+    case TextureFormat::Astc4x4:
+    case TextureFormat::Astc5x5:
+    case TextureFormat::Astc6x6:
+    case TextureFormat::Astc8x8:
+    case TextureFormat::Astc4x4Normal:
+    case TextureFormat::Astc5x5Normal:
+    case TextureFormat::Astc6x6Normal:
+    case TextureFormat::Astc8x8Normal:
       return;
   }
 }

@@ -81,10 +81,19 @@ std::uint32_t colourModel(TextureFormat format) {
     case TextureFormat::Astc5x5:
     case TextureFormat::Astc6x6:
     case TextureFormat::Astc8x8:
+    case TextureFormat::Astc4x4Normal:
+    case TextureFormat::Astc5x5Normal:
+    case TextureFormat::Astc6x6Normal:
+    case TextureFormat::Astc8x8Normal:
       return kModelAstc;
-    default:
+    case TextureFormat::Etc1:
+    case TextureFormat::Etc2:
+    case TextureFormat::Etc2A:
+    case TextureFormat::EacR11:
+    case TextureFormat::EacRg11:
       return kModelEtc2;
   }
+  return kModelEtc2;  // not reached: every format is handled above
 }
 
 std::vector<Sample> samples(TextureFormat format) {
@@ -101,9 +110,22 @@ std::vector<Sample> samples(TextureFormat format) {
       return {{kChannelEtc2Color, 0}};
     case TextureFormat::Etc2A:
       return {{kChannelAlpha, 0}, {kChannelEtc2Color, 64}};
-    default:  // BC1, BC7 (colour), BC4 and EAC R11 (red), ASTC (data): one sample over the block
+    // One sample over the block: colour (BC1, BC7), red (BC4, EAC R11), ASTC's data.
+    case TextureFormat::Bc1:
+    case TextureFormat::Bc7:
+    case TextureFormat::Bc4:
+    case TextureFormat::EacR11:
+    case TextureFormat::Astc4x4:
+    case TextureFormat::Astc5x5:
+    case TextureFormat::Astc6x6:
+    case TextureFormat::Astc8x8:
+    case TextureFormat::Astc4x4Normal:
+    case TextureFormat::Astc5x5Normal:
+    case TextureFormat::Astc6x6Normal:
+    case TextureFormat::Astc8x8Normal:
       return {{0, 0}};
   }
+  return {{0, 0}};  // not reached: every format is handled above
 }
 
 std::vector<std::uint8_t> dataFormatDescriptor(const CompressedTexture& texture) {
@@ -215,6 +237,87 @@ std::vector<std::uint8_t> encodeKtx2(const CompressedTexture& texture, int zstdL
   return std::move(out.data());
 }
 
+namespace {
+
+// Reads Relief's own keys (the map's slot, its source channels, the normal swizzle) from the
+// key/value data into `texture`; other writers' keys are skipped. Returns whether the swizzle
+// says X is in alpha.
+bool readReliefKeys(const std::vector<std::uint8_t>& bytes, std::uint32_t kvdOffset,
+                    std::uint32_t kvdLength, CompressedTexture& texture) {
+  bool normalAg = false;
+  std::size_t at = kvdOffset;
+  const std::size_t end = std::size_t(kvdOffset) + kvdLength;
+  while (at + 4 <= end) {
+    ByteReader entry(bytes, at);
+    const std::uint32_t length = entry.u32();
+    if (length == 0 || length > end - at - 4)
+      break;
+    const std::string pair(bytes.begin() + std::ptrdiff_t(at + 4),
+                           bytes.begin() + std::ptrdiff_t(at + 4 + length));
+    const std::size_t zero = pair.find('\0');
+    if (zero != std::string::npos) {
+      const std::string key = pair.substr(0, zero);
+      std::string value = pair.substr(zero + 1);
+      if (!value.empty() && value.back() == '\0')
+        value.pop_back();
+      if (key == kSlotKey) {
+        if (const std::optional<MapSlot> slot = findMapSlot(value))
+          texture.slot = *slot;
+      } else if (key == kChannelsKey && value.size() == 1 && value[0] >= '1' && value[0] <= '4') {
+        texture.sourceChannels = value[0] - '0';
+      } else if (key == kSwizzleKey) {
+        normalAg = value == kNormalAgSwizzle;
+      }
+    }
+    at += 4 + ((length + 3) / 4) * 4;
+  }
+  return normalAg;
+}
+
+// One mip level's blocks at its entry in the level index, inflated when the file is
+// Zstandard-supercompressed; fails with what is wrong in `name`.
+Result<CompressedLevel> readLevel(const std::vector<std::uint8_t>& bytes, int level,
+                                  TextureFormat format, int w, int h, bool zstd,
+                                  const std::string& name) {
+  const auto fail = [&name](const std::string& problem) { return fileError(name, problem); };
+  ByteReader entry(bytes, kHeaderEnd + std::size_t(level) * 24);
+  const std::uint64_t offset = entry.u64(), length = entry.u64(), unpacked = entry.u64();
+  if (!entry.ok())
+    return fail("the level index is cut short");
+  const std::uint64_t expected = compressedLevelSize(format, w, h);
+  // Without supercompression the stored bytes are the blocks; with it, what they inflate to.
+  const std::uint64_t blocks = zstd ? unpacked : length;
+  if (blocks != expected)
+    return fail("mip level " + std::to_string(level) + " holds " + std::to_string(blocks) +
+                " bytes; a " + std::to_string(w) + "x" + std::to_string(h) + " level needs " +
+                std::to_string(expected));
+  if (offset > bytes.size() || length > bytes.size() - offset)
+    return fail("mip level " + std::to_string(level) + " lies outside the file (bytes " +
+                std::to_string(offset) + ".." + std::to_string(offset + length) + " of " +
+                std::to_string(bytes.size()) + ")");
+  CompressedLevel compressed{w, h, {}};
+  if (zstd) {
+    // The output is sized by the level's dimensions (already within the limits), never by
+    // what the frame claims; a frame that inflates to anything else is refused.
+    compressed.data.resize(std::size_t(expected));
+    const std::size_t inflated = ZSTD_decompress(compressed.data.data(), compressed.data.size(),
+                                                 bytes.data() + offset, std::size_t(length));
+    if (ZSTD_isError(inflated) || inflated != expected) {
+      return fail("mip level " + std::to_string(level) + ": the Zstandard data is damaged (" +
+                  (ZSTD_isError(inflated) ? std::string(ZSTD_getErrorName(inflated))
+                                          : std::to_string(inflated) + " bytes instead of " +
+                                                std::to_string(expected)) +
+                  ")");
+    }
+  } else {
+    compressed.data.assign(bytes.begin() + std::ptrdiff_t(offset),
+                           bytes.begin() + std::ptrdiff_t(offset + length));
+  }
+  return compressed;
+}
+
+}  // namespace
+
 Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
                                      const std::string& name) {
   const auto fail = [&name](const std::string& problem) { return fileError(name, problem); };
@@ -264,35 +367,7 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
   texture.zstdInFile = supercompression == kSchemeZstd;
 
   // Our own keys say what the map was; other writers' files fall back to the layout's guess.
-  bool normalAg = false;
-  if (kvdLength > 0) {
-    std::size_t at = kvdOffset;
-    const std::size_t end = std::size_t(kvdOffset) + kvdLength;
-    while (at + 4 <= end) {
-      ByteReader entry(bytes, at);
-      const std::uint32_t length = entry.u32();
-      if (length == 0 || length > end - at - 4)
-        break;
-      const std::string pair(bytes.begin() + std::ptrdiff_t(at + 4),
-                             bytes.begin() + std::ptrdiff_t(at + 4 + length));
-      const std::size_t zero = pair.find('\0');
-      if (zero != std::string::npos) {
-        const std::string key = pair.substr(0, zero);
-        std::string value = pair.substr(zero + 1);
-        if (!value.empty() && value.back() == '\0')
-          value.pop_back();
-        if (key == kSlotKey) {
-          if (const std::optional<MapSlot> slot = findMapSlot(value))
-            texture.slot = *slot;
-        } else if (key == kChannelsKey && value.size() == 1 && value[0] >= '1' && value[0] <= '4') {
-          texture.sourceChannels = value[0] - '0';
-        } else if (key == kSwizzleKey) {
-          normalAg = value == kNormalAgSwizzle;
-        }
-      }
-      at += 4 + ((length + 3) / 4) * 4;
-    }
-  }
+  const bool normalAg = kvdLength > 0 && readReliefKeys(bytes, kvdOffset, kvdLength, texture);
   // The X-in-alpha normal formats share their codes: the swizzle key marks them (and, from
   // files written before it was, a BC3 file holding a normal map is DXT5nm).
   if (normalAg || (texture.slot == MapSlot::Normal && *format == TextureFormat::Bc3)) {
@@ -305,40 +380,11 @@ Result<CompressedTexture> decodeKtx2(const std::vector<std::uint8_t>& bytes,
 
   int w = int(width), h = int(height);
   for (int level = 0; level < levels; ++level) {
-    ByteReader entry(bytes, kHeaderEnd + std::size_t(level) * 24);
-    const std::uint64_t offset = entry.u64(), length = entry.u64(), unpacked = entry.u64();
-    if (!entry.ok())
-      return fail("the level index is cut short");
-    const std::uint64_t expected = compressedLevelSize(*format, w, h);
-    // Without supercompression the stored bytes are the blocks; with it, what they inflate to.
-    const std::uint64_t blocks = texture.zstdInFile ? unpacked : length;
-    if (blocks != expected)
-      return fail("mip level " + std::to_string(level) + " holds " + std::to_string(blocks) +
-                  " bytes; a " + std::to_string(w) + "x" + std::to_string(h) + " level needs " +
-                  std::to_string(expected));
-    if (offset > bytes.size() || length > bytes.size() - offset)
-      return fail("mip level " + std::to_string(level) + " lies outside the file (bytes " +
-                  std::to_string(offset) + ".." + std::to_string(offset + length) + " of " +
-                  std::to_string(bytes.size()) + ")");
-    CompressedLevel compressed{w, h, {}};
-    if (texture.zstdInFile) {
-      // The output is sized by the level's dimensions (already within the limits), never by
-      // what the frame claims; a frame that inflates to anything else is refused.
-      compressed.data.resize(std::size_t(expected));
-      const std::size_t inflated = ZSTD_decompress(compressed.data.data(), compressed.data.size(),
-                                                   bytes.data() + offset, std::size_t(length));
-      if (ZSTD_isError(inflated) || inflated != expected) {
-        return fail("mip level " + std::to_string(level) + ": the Zstandard data is damaged (" +
-                    (ZSTD_isError(inflated) ? std::string(ZSTD_getErrorName(inflated))
-                                            : std::to_string(inflated) + " bytes instead of " +
-                                                  std::to_string(expected)) +
-                    ")");
-      }
-    } else {
-      compressed.data.assign(bytes.begin() + std::ptrdiff_t(offset),
-                             bytes.begin() + std::ptrdiff_t(offset + length));
-    }
-    texture.levels.push_back(std::move(compressed));
+    Result<CompressedLevel> compressed =
+        readLevel(bytes, level, *format, w, h, texture.zstdInFile, name);
+    if (!compressed)
+      return makeError(compressed.error());
+    texture.levels.push_back(std::move(compressed).value());
     w = std::max(1, w / 2);
     h = std::max(1, h / 2);
   }

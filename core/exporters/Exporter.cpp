@@ -11,42 +11,81 @@
 namespace relief::core::inline exporters {
 namespace {
 
+Result<ExportResult> fromPath(Result<std::string> written) {
+  if (!written)
+    return makeError(written.error());
+  return ExportResult{std::move(written).value(), {}};
+}
+
+Result<ExportResult> fromEngine(Result<EngineExportResult> written) {
+  if (!written)
+    return makeError(written.error());
+  return ExportResult{written->mainPath, written->notes};
+}
+
+Result<ExportResult> runPackage(const ExportRequest& request, const WorkControl& control) {
+  return fromPath(exportPackage(request.preset, request.folder, request.package, control));
+}
+Result<ExportResult> runGltf(const ExportRequest& request, const WorkControl&) {
+  return fromPath(exportGltf(request.preset, request.mesh, request.folder));
+}
+Result<ExportResult> runGodot(const ExportRequest& request, const WorkControl&) {
+  return fromEngine(exportGodot(request.preset, request.folder));
+}
+Result<ExportResult> runUnreal(const ExportRequest& request, const WorkControl&) {
+  return fromEngine(exportUnreal(request.preset, request.folder));
+}
+Result<ExportResult> runUnityUrp(const ExportRequest& request, const WorkControl&) {
+  return fromEngine(exportUnity(request.preset, request.folder, UnityPipeline::Urp));
+}
+Result<ExportResult> runUnityHdrp(const ExportRequest& request, const WorkControl&) {
+  return fromEngine(exportUnity(request.preset, request.folder, UnityPipeline::Hdrp));
+}
+
 constexpr std::array kKinds = {
     ExportKindInfo{ExportKind::Package, "package", "Package: maps and a preset in a folder",
                    "The maps in the chosen format and a .relief preset pointing at them: a "
                    "folder to copy into another project or hand to a colleague.",
-                   false, true},
+                   false, true, runPackage},
     ExportKindInfo{ExportKind::Gltf, "gltf", "glTF 2.0: mesh and material (.gltf, .bin, textures)",
                    "The mesh with a metallic-roughness material (base colour, normal, "
                    "occlusion). glTF has no parallax: the height map and every Relief parameter "
                    "go into the material's extras.relief. See docs/export.md.",
-                   true, false},
+                   true, false, runGltf},
     ExportKindInfo{ExportKind::Godot, "godot", "Godot 4: StandardMaterial3D (.tres and textures)",
                    "Godot's heightmap settings converted from Relief's (scale, deep parallax, "
                    "layers, flips); what Godot cannot show is listed after the export. See "
                    "docs/export.md.",
-                   false, false},
+                   false, false, runGodot},
     ExportKindInfo{ExportKind::Unreal, "unreal",
                    "Unreal Engine: textures, manifest and import script",
                    "BaseColor, Normal (DirectX, green down), ORM (occlusion, roughness, metallic) "
                    "and Height textures, a JSON manifest with the ParallaxOcclusionMapping "
                    "function's inputs converted from Relief's, and a Python script that builds "
                    "the material in the Unreal Editor. See docs/export.md.",
-                   false, false},
+                   false, false, runUnreal},
     ExportKindInfo{ExportKind::UnityUrp, "unity", "Unity URP Lit: .mat, textures and .meta files",
                    "A Universal Render Pipeline Lit material with its textures (metallic/"
                    "smoothness, occlusion, normal and height maps) and .meta files: copy the "
                    "folder into Assets/. URP's parallax is single-step. See docs/export.md.",
-                   false, false},
+                   false, false, runUnityUrp},
     ExportKindInfo{ExportKind::UnityHdrp, "unity-hdrp",
                    "Unity HDRP Lit: .mat, textures and .meta files",
                    "A High Definition Render Pipeline Lit material with its textures (mask map, "
                    "normal and height maps) and .meta files, the relief as HDRP's pixel "
                    "displacement (POM): copy the folder into Assets/. See docs/export.md.",
-                   false, false},
+                   false, false, runUnityHdrp},
 };
 
 static_assert(kKinds.size() == std::size_t(ExportKind::UnityHdrp) + 1, "one entry per kind");
+constexpr bool rowsInEnumOrder() {
+  for (std::size_t i = 0; i < kKinds.size(); ++i) {
+    if (std::size_t(kKinds[i].kind) != i)
+      return false;
+  }
+  return true;
+}
+static_assert(rowsInEnumOrder(), "exportKindInfo indexes the rows by kind");
 
 constexpr std::array kMapFormats = {
     ExportChoice<PackageMapFormat>{PackageMapFormat::Png16, "png16", "16-bit PNG"},
@@ -60,19 +99,6 @@ constexpr std::array kTextureChoices = {
                                   "DDS for BC formats, KTX2 for the rest"},
     ExportChoice<PackageTextures>{PackageTextures::None, "none", "None"},
 };
-
-Result<EngineExportResult> exportEngine(const ExportRequest& request) {
-  switch (request.kind) {
-    case ExportKind::Unreal:
-      return exportUnreal(request.preset, request.folder);
-    case ExportKind::UnityUrp:
-      return exportUnity(request.preset, request.folder, UnityPipeline::Urp);
-    case ExportKind::UnityHdrp:
-      return exportUnity(request.preset, request.folder, UnityPipeline::Hdrp);
-    default:
-      return exportGodot(request.preset, request.folder);
-  }
-}
 
 static_assert(kMapFormats[0].value == PackageOptions{}.dataMaps, "the first is the default");
 static_assert(kTextureChoices[0].value == PackageOptions{}.textures, "the first is the default");
@@ -106,36 +132,7 @@ std::span<const ExportChoice<PackageTextures>> packageTextureChoices() {
 Result<ExportResult> exportMaterial(const ExportRequest& request, const WorkControl& control) {
   if (control.cancelled())
     return makeError("cancelled");
-  ExportResult result;
-  switch (request.kind) {
-    case ExportKind::Package: {
-      Result<std::string> written =
-          exportPackage(request.preset, request.folder, request.package, control);
-      if (!written)
-        return makeError(written.error());
-      result.writtenPath = std::move(written).value();
-      break;
-    }
-    case ExportKind::Gltf: {
-      Result<std::string> written = exportGltf(request.preset, request.mesh, request.folder);
-      if (!written)
-        return makeError(written.error());
-      result.writtenPath = std::move(written).value();
-      break;
-    }
-    case ExportKind::Godot:
-    case ExportKind::Unreal:
-    case ExportKind::UnityUrp:
-    case ExportKind::UnityHdrp: {
-      Result<EngineExportResult> written = exportEngine(request);
-      if (!written)
-        return makeError(written.error());
-      result.writtenPath = written->mainPath;
-      result.notes = written->notes;
-      break;
-    }
-  }
-  return result;
+  return exportKindInfo(request.kind).run(request, control);
 }
 
 }  // namespace relief::core::exporters

@@ -8,8 +8,8 @@
 #include "core/base/Result.h"
 #include "core/base/WorkControl.h"
 #include "core/exporters/PackageExport.h"
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/Mesh.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <optional>
 #include <span>
@@ -21,6 +21,9 @@ namespace relief::core::inline exporters {
 
 enum class ExportKind { Package, Gltf, Godot, Unreal, UnityUrp, UnityHdrp };
 
+struct ExportRequest;
+struct ExportResult;
+
 struct ExportKindInfo {
   ExportKind kind;
   std::string_view name;         // relief-cli export --to <name>
@@ -28,6 +31,8 @@ struct ExportKindInfo {
   std::string_view description;  // --help and the dialog's explanation
   bool usesMesh;                 // glTF carries the mesh
   bool usesPackageOptions;       // map file format and compressed textures
+  // Writes the files (the kind's implementation file); exportMaterial dispatches through it.
+  Result<ExportResult> (*run)(const ExportRequest& request, const WorkControl& control);
 };
 
 std::span<const ExportKindInfo> allExportKinds();

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "core/base/Result.h"
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/Mesh.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <string>
 

@@ -4,7 +4,7 @@
 
 #include "core/base/Result.h"
 #include "core/base/WorkControl.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <string>
 

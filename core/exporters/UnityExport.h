@@ -8,7 +8,7 @@
 
 #include "core/base/Result.h"
 #include "core/exporters/EngineConversion.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <string>
 

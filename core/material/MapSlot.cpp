@@ -12,6 +12,10 @@ namespace {
 struct SlotInfo {
   std::string_view name;
   std::string_view label;
+  MapTexels texels;
+  // What an empty scalar slot means: the top surface, no occlusion, no roughness (the parameter
+  // alone applies), a metallic texel of 1 (pbr multiplies the metallic factor by it).
+  float neutral;
   std::array<std::string_view, 6> hints;  // matched as whole words of the file stem
   // Short suffixes game data uses ("wall_n.png", "floor_hm.jpg": Cube 2 and Red Eclipse name
   // their texture slots 0/d, n, z, s), matched only as the stem's last word: "n" or "d" in the
@@ -22,22 +26,40 @@ struct SlotInfo {
 constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
     {"color",
      "Colour",
+     MapTexels::Colour,
+     0.0f,
      {"color", "colour", "albedo", "diffuse", "basecolor", "diff"},
      {"d", "cc", "col", "c"}},
     {"normal",
      "Normal",
+     MapTexels::Normal,
+     0.0f,
      {"normal", "nrm", "norm", "nor", "normalgl", "normaldx"},
      {"n", "nm", "nml", ""}},
     {"height",
      "Height",
+     MapTexels::Scalar,
+     1.0f,
      {"height", "disp", "displacement", "bump", "depth", "parallax"},
      {"z", "h", "hm", "heightmap"}},
     {"ao",
      "Ambient occlusion",
+     MapTexels::Scalar,
+     1.0f,
      {"ao", "occlusion", "ambientocclusion", "", "", ""},
      {"occ", "", "", ""}},
-    {"roughness", "Roughness", {"roughness", "rough", "rgh", "", "", ""}, {"", "", "", ""}},
-    {"metallic", "Metallic", {"metallic", "metalness", "metal", "mtl", "", ""}, {"", "", "", ""}},
+    {"roughness",
+     "Roughness",
+     MapTexels::Scalar,
+     0.0f,
+     {"roughness", "rough", "rgh", "", "", ""},
+     {"", "", "", ""}},
+    {"metallic",
+     "Metallic",
+     MapTexels::Scalar,
+     1.0f,
+     {"metallic", "metalness", "metal", "mtl", "", ""},
+     {"", "", "", ""}},
 }};
 
 // Specular and gloss maps: Relief's materials have no slot for them (roughness is the
@@ -76,8 +98,16 @@ std::optional<MapSlot> findMapSlot(std::string_view name) {
   return std::nullopt;
 }
 
+MapTexels mapSlotTexels(MapSlot slot) {
+  return kSlots[std::size_t(slot)].texels;
+}
+
+float mapSlotNeutralValue(MapSlot slot) {
+  return kSlots[std::size_t(slot)].neutral;
+}
+
 ColorSpace mapSlotColorSpace(MapSlot slot) {
-  return slot == MapSlot::Color ? ColorSpace::Srgb : ColorSpace::Linear;
+  return mapSlotTexels(slot) == MapTexels::Colour ? ColorSpace::Srgb : ColorSpace::Linear;
 }
 
 namespace {

@@ -18,11 +18,19 @@ constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {
     MapSlot::Color,     MapSlot::Normal,  MapSlot::Height, MapSlot::AmbientOcclusion,
     MapSlot::Roughness, MapSlot::Metallic};
 
+// What a slot's texels are, which decides how they are stored on the GPU, which formats suit
+// them and what an empty slot samples as: colour (sRGB), a tangent-space normal, or one channel
+// of linear data (height, AO, roughness, metallic).
+enum class MapTexels { Colour, Normal, Scalar };
+
 std::string_view mapSlotName(MapSlot slot);   // "color", "normal", "height", "ao", "roughness",
                                               // "metallic"
 std::string_view mapSlotLabel(MapSlot slot);  // "Colour", "Normal", ...
 std::optional<MapSlot> findMapSlot(std::string_view name);
 
+MapTexels mapSlotTexels(MapSlot slot);
+// The value an empty scalar slot samples as (height 1, AO 1, roughness 0, metallic 1).
+float mapSlotNeutralValue(MapSlot slot);
 // Colour maps are sRGB; everything else is linear data (DESIGN.md).
 ColorSpace mapSlotColorSpace(MapSlot slot);
 

@@ -35,6 +35,8 @@ bool isOccludingRelief(Technique technique);
 std::span<const Technique> allTechniques();
 std::string_view techniqueName(Technique technique);
 std::string_view techniqueLabel(Technique technique);
+// The #define that selects the technique's code in the shaders ("TECHNIQUE_POM").
+std::string_view techniqueShaderDefine(Technique technique);
 std::optional<Technique> findTechnique(std::string_view name);
 
 }  // namespace relief::core::inline material

@@ -1,6 +1,6 @@
 #include "HostileCorpus.h"
 
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // can be checked against, and a fresh scratch folder per test.
 #pragma once
 
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <string>
 

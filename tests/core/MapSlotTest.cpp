@@ -75,5 +75,21 @@ TEST(MapSlot, ColourIsSrgbAndDataIsLinear) {
   }
 }
 
+// What an empty slot means to the shading: no occlusion (AO 1), the top surface (height 1), the
+// roughness parameter alone (0 in the map), and a metallic texel of 1 that lets the metallic
+// factor through (glTF 2.0's metallicRoughness convention).
+TEST(MapSlot, TheTableSaysWhatEachSlotHoldsAndWhatEmptyMeans) {
+  EXPECT_EQ(mapSlotTexels(MapSlot::Color), MapTexels::Colour);
+  EXPECT_EQ(mapSlotTexels(MapSlot::Normal), MapTexels::Normal);
+  for (MapSlot slot :
+       {MapSlot::Height, MapSlot::AmbientOcclusion, MapSlot::Roughness, MapSlot::Metallic}) {
+    EXPECT_EQ(mapSlotTexels(slot), MapTexels::Scalar) << mapSlotName(slot);
+  }
+  EXPECT_EQ(mapSlotNeutralValue(MapSlot::Height), 1.0f);
+  EXPECT_EQ(mapSlotNeutralValue(MapSlot::AmbientOcclusion), 1.0f);
+  EXPECT_EQ(mapSlotNeutralValue(MapSlot::Roughness), 0.0f);
+  EXPECT_EQ(mapSlotNeutralValue(MapSlot::Metallic), 1.0f);
+}
+
 }  // namespace
 }  // namespace relief::core

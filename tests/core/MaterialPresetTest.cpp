@@ -3,8 +3,8 @@
 // and 2 migrate; a failed save leaves the old file byte for byte; maps made in the editor are
 // written beside the preset.
 #include "core/image/ImageIO.h"
-#include "core/material/MaterialPreset.h"
-#include "core/material/OrmTexture.h"
+#include "core/preset/MaterialPreset.h"
+#include "core/preset/OrmTexture.h"
 #include "support/TestPaths.h"
 
 #include <QJsonDocument>

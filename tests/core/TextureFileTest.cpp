@@ -239,6 +239,29 @@ TEST(DdsFileTest, PillowReadsOurFilesWithOurPixels) {
 
 // --- KTX2 ------------------------------------------------------------------------------------
 
+// The Khronos Data Format Specification 1.3, section 5.6: every BC format is one of the
+// KHR_DF_MODEL_BC1A..BC7 models (128..134), ETC1 is 160, ETC2 and EAC 161, ASTC 162. Each
+// format's descriptor names its family's model; the ASTC normal formats once fell through to
+// ETC2's.
+TEST(Ktx2FileTest, EveryFormatsDescriptorNamesItsFamilysColourModel) {
+  for (const TextureFormatInfo& info : allTextureFormats()) {
+    const std::vector<std::uint8_t> bytes = encodeKtx2(compressed(info.format, 8, 8, false));
+    const std::uint32_t model = u32At(bytes, u32At(bytes, 48) + 12) & 0xFF;
+    switch (info.family) {
+      case FormatFamily::Bc:
+        EXPECT_GE(model, 128u) << info.name;
+        EXPECT_LE(model, 134u) << info.name;
+        break;
+      case FormatFamily::Etc:
+        EXPECT_TRUE(model == 160u || model == 161u) << info.name << ": " << model;
+        break;
+      case FormatFamily::Astc:
+        EXPECT_EQ(model, 162u) << info.name;
+        break;
+    }
+  }
+}
+
 TEST(Ktx2FileTest, HeaderIndexAndDescriptorFollowTheSpecification) {
   const CompressedTexture texture = compressed(TextureFormat::Astc6x6, 37, 23, true);
   ASSERT_EQ(texture.levels.size(), 6u);  // 37x23, 18x11, 9x5, 4x2, 2x1, 1x1

@@ -5,8 +5,8 @@
 // (reference 003, eq. 2.1). And compression must visibly change the picture for a coarse format,
 // so the comparison is not between two copies of the original.
 #include "core/compression/Compressor.h"
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/preset/MaterialPreset.h"
 #include "support/ImageCompare.h"
 #include "support/OffscreenFixture.h"
 #include "support/TestPaths.h"

@@ -3,8 +3,8 @@
 // along every view ray, within a stated PSNR; reference 001's angle rule at its old 8/32 does
 // not on the 8-bit map.
 #include "core/image/ImageIO.h"
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/preset/MaterialPreset.h"
 #include "support/OffscreenFixture.h"
 #include "support/TestPaths.h"
 

@@ -1,8 +1,8 @@
 // Golden images of the bundled samples, rendered through the same path as the viewport and
 // `relief-cli render`. Baselines live in tests/baselines/ (RELIEF_UPDATE_BASELINES=1 rewrites
 // them after an intended change; look at the new images before committing them).
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/preset/MaterialPreset.h"
 #include "support/ImageCompare.h"
 #include "support/OffscreenFixture.h"
 #include "support/TestPaths.h"

@@ -2,8 +2,8 @@
 // 8-bit map lit from above every slope are not shadowed by their own quantisation (acne), for
 // every technique and for 16-bit and float maps alike; and the exact tracers' shadows continue
 // where the height map's first mip level begins instead of ending in a line there.
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/preset/MaterialPreset.h"
 #include "support/OffscreenFixture.h"
 #include "support/TestPaths.h"
 

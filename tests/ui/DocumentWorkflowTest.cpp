@@ -3,7 +3,7 @@
 // autosave and recovery after a crash; the preset library; export; viewport images; the
 // shortcut list. Modal dialogs are answered by a timer, as a user would click them.
 #include "core/image/ImageIO.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 #include "support/DialogAnswerer.h"
 #include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"

@@ -3,7 +3,7 @@
 // the offscreen renderer (and so relief-cli render) produces for the same view.
 #include "core/image/ColorSpace.h"
 #include "core/image/ImageIO.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 #include "renderer/ImageConversion.h"
 #include "renderer/OffscreenRenderer.h"
 #include "support/DialogAnswerer.h"

@@ -13,8 +13,8 @@
 // the tables.
 //
 // Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5] [--shading-only]
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/preset/MaterialPreset.h"
 #include "core/shading/EnvironmentMaps.h"
 #include "core/tracing/ConeMap.h"
 #include "core/tracing/MaxMipPyramid.h"

@@ -6,7 +6,7 @@
 #include "core/generators/NormalFromHeight.h"
 #include "core/image/ColorSpace.h"
 #include "core/image/ImageIO.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "core/exporters/Exporter.h"
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/Mesh.h"
+#include "core/preset/MaterialPreset.h"
 #include "ui/Forward.h"
 
 #include <QDialog>

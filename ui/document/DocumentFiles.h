@@ -4,7 +4,7 @@
 // the view of a preset that was opened.
 #pragma once
 
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 #include "ui/Forward.h"
 
 #include <QObject>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/material/Material.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 #include "ui/Forward.h"
 
 #include <QUndoCommand>

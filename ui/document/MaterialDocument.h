@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/material/Material.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 
 #include <QObject>
 #include <QString>

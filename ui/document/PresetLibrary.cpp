@@ -2,8 +2,8 @@
 #include "ui/document/PresetLibrary.h"
 
 #include "core/exporters/PackageExport.h"
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/preset/MaterialPreset.h"
 #include "renderer/ImageConversion.h"
 #include "renderer/OffscreenRenderer.h"
 #include "ui/document/MaterialDocument.h"

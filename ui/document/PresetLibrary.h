@@ -23,9 +23,11 @@ class OffscreenRenderer;
 
 namespace relief::core::inline material {
 class Material;
+}
+namespace relief::core::inline preset {
 struct LoadedPreset;
 struct Preset;
-}  // namespace relief::core::inline material
+}  // namespace relief::core::inline preset
 
 namespace relief::ui::inline document {
 

@@ -4,7 +4,7 @@
 // is stale (its process died) holds work to offer on the next start.
 #pragma once
 
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 #include "ui/Forward.h"
 
 #include <QDateTime>

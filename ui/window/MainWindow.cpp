@@ -1,9 +1,9 @@
 // MainWindow; see MainWindow.h.
 #include "ui/window/MainWindow.h"
 
-#include "core/material/MaterialPreset.h"
 #include "core/mesh/MeshImport.h"
 #include "core/mesh/MeshPrimitives.h"
+#include "core/preset/MaterialPreset.h"
 #include "ui/dialogs/ExportDialog.h"
 #include "ui/dialogs/PreferencesDialog.h"
 #include "ui/dialogs/ShortcutsDialog.h"

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/material/MapSlot.h"
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 #include "ui/Forward.h"
 
 #include <QMainWindow>

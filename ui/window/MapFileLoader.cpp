@@ -5,7 +5,7 @@
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageFileTypes.h"
 #include "core/material/MapContent.h"
-#include "core/material/OrmTexture.h"
+#include "core/preset/OrmTexture.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/window/AppSettings.h"
 #include "ui/window/QtText.h"

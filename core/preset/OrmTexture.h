@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace relief::core::inline material {
+namespace relief::core::inline preset {
 
 struct ChannelMap {
   MapSlot slot;
@@ -23,4 +23,4 @@ struct ChannelMap {
 // file, when it does not load or has fewer than three channels (a grey image is no ORM texture).
 Result<std::vector<ChannelMap>> loadOrmTexture(const std::string& path);
 
-}  // namespace relief::core::inline material
+}  // namespace relief::core::inline preset

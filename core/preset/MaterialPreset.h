@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace relief::core::inline material {
+namespace relief::core::inline preset {
 
 constexpr std::string_view kPresetFormatName = "relief-material";
 // 1: the first format (technique, parameters, maps). 2: adds per-map compression choices and
@@ -49,6 +49,10 @@ struct LoadedPreset {
   int fileVersion = kPresetVersion;  // the version the file had before migration
 };
 
+// A parameter's value as the preset writes it: a Bool as true/false, a Choice by its name, a
+// number as it is. The glTF export's extras.relief use the same spelling.
+QJsonValue parameterJson(const ParameterSpec& spec, double value);
+
 // Loads the preset and the maps it names. Fails (naming the file) on unreadable or malformed
 // JSON, a wrong format name, or a version newer than this program understands.
 Result<LoadedPreset> loadPreset(const std::string& path);
@@ -65,4 +69,4 @@ struct SavedPreset {
 // 0..1.
 Result<SavedPreset> savePreset(const Preset& preset, const std::string& path);
 
-}  // namespace relief::core::inline material
+}  // namespace relief::core::inline preset

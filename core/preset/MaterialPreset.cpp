@@ -1,5 +1,5 @@
 // Preset files; see MaterialPreset.h.
-#include "core/material/MaterialPreset.h"
+#include "core/preset/MaterialPreset.h"
 
 #include "core/base/AtomicFile.h"
 #include "core/base/InputFile.h"
@@ -18,7 +18,7 @@
 #include <cstdio>
 #include <map>
 
-namespace relief::core::inline material {
+namespace relief::core::inline preset {
 namespace {
 
 QString qstr(std::string_view text) {
@@ -357,6 +357,19 @@ bool needsFloat(const Image& image) {
 
 }  // namespace
 
+QJsonValue parameterJson(const ParameterSpec& spec, double value) {
+  switch (spec.kind) {
+    case ParamKind::Bool:
+      return value != 0.0;
+    case ParamKind::Choice:
+      return qstr(spec.choices[std::size_t(value)]);
+    case ParamKind::Float:
+    case ParamKind::Int:
+      return value;
+  }
+  return value;  // not reached: every kind is handled above
+}
+
 Result<LoadedPreset> loadPreset(const std::string& path) {
   // A FIFO would block the read forever and /dev/zero would fill memory: only regular files of
   // a sane size are read (links are followed, so a link to either is refused too).
@@ -418,20 +431,27 @@ Result<LoadedPreset> loadPreset(const std::string& path) {
   return loaded;
 }
 
-Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
+namespace {
+
+QJsonObject compressionJson(const CompressionSettings& compression) {
+  QJsonObject choice{{QStringLiteral("format"), qstr(textureFormatInfo(compression.format).name)},
+                     {QStringLiteral("quality"), qstr(compressionQualityName(compression.quality))},
+                     {QStringLiteral("mipmaps"), compression.mipmaps}};
+  if (compression.zstdLevel > 0)
+    choice.insert(QStringLiteral("zstd"), compression.zstdLevel);
+  if (compression.perceptual)
+    choice.insert(QStringLiteral("perceptual"), true);
+  return choice;
+}
+
+// The "maps" object: each map's path relative to the preset, colour space, channel and
+// compression. A map generated in the editor (no file) is written beside the preset first, at
+// full precision, and listed in `saved`.
+Result<QJsonObject> mapsJson(const Preset& preset, const std::string& path, QJsonObject maps,
+                             SavedPreset& saved) {
   const QFileInfo presetFile(QString::fromStdString(path));
   const QDir presetDir = presetFile.absoluteDir();
   const Material& material = preset.material;
-  SavedPreset saved;
-
-  // Start from what was read, so unknown keys (top level, per map, per parameter) survive.
-  QJsonObject root = preset.preserved;
-  root.insert(QStringLiteral("format"), qstr(kPresetFormatName));
-  root.insert(QStringLiteral("version"), kPresetVersion);
-  if (!material.name().empty()) {
-    root.insert(QStringLiteral("name"), QString::fromStdString(material.name()));
-  }
-  QJsonObject maps = root.value(QStringLiteral("maps")).toObject();
   for (MapSlot slot : kAllMapSlots) {
     const QString key = qstr(mapSlotName(slot));
     const MaterialMap& map = material.map(slot);
@@ -465,47 +485,24 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
     else
       entry.remove(QStringLiteral("channel"));
     const MapCompression& compression = preset.compression[std::size_t(slot)];
-    if (!compression) {
+    if (!compression)
       entry.remove(QStringLiteral("compression"));
-    } else {
-      QJsonObject choice{
-          {QStringLiteral("format"), qstr(textureFormatInfo(compression->format).name)},
-          {QStringLiteral("quality"), qstr(compressionQualityName(compression->quality))},
-          {QStringLiteral("mipmaps"), compression->mipmaps}};
-      if (compression->zstdLevel > 0)
-        choice.insert(QStringLiteral("zstd"), compression->zstdLevel);
-      if (compression->perceptual)
-        choice.insert(QStringLiteral("perceptual"), true);
-      entry.insert(QStringLiteral("compression"), choice);
-    }
+    else
+      entry.insert(QStringLiteral("compression"), compressionJson(*compression));
     maps.insert(key, entry);
   }
-  root.insert(QStringLiteral("maps"), maps);
-  root.insert(QStringLiteral("technique"), qstr(techniqueName(material.technique())));
-  QJsonObject parameters = root.value(QStringLiteral("parameters")).toObject();
-  for (const ParameterSpec& spec : allParameters()) {
-    const double value = material.parameter(spec.id);
-    switch (spec.kind) {
-      case ParamKind::Bool:
-        parameters.insert(qstr(spec.name), value != 0.0);
-        break;
-      case ParamKind::Choice:
-        parameters.insert(qstr(spec.name), qstr(spec.choices[std::size_t(value)]));
-        break;
-      default:
-        parameters.insert(qstr(spec.name), value);
-    }
-  }
-  root.insert(QStringLiteral("parameters"), parameters);
+  return maps;
+}
 
-  QJsonObject view = root.value(QStringLiteral("view")).toObject();
-  if (!preset.view.mesh.empty()) {
-    const QString mesh = QString::fromStdString(preset.view.mesh);
+// The "view" object: the mesh and environment files relative to the preset.
+QJsonObject viewJson(const ViewState& state, const QDir& presetDir, QJsonObject view) {
+  if (!state.mesh.empty()) {
+    const QString mesh = QString::fromStdString(state.mesh);
     view.insert(QStringLiteral("mesh"),
                 QFileInfo(mesh).isAbsolute() ? presetDir.relativeFilePath(mesh) : mesh);
   }
-  if (preset.view.camera) {
-    const OrbitCamera& c = *preset.view.camera;
+  if (state.camera) {
+    const OrbitCamera& c = *state.camera;
     view.insert(QStringLiteral("camera"),
                 QJsonObject{{QStringLiteral("yaw"), tidy(c.yawDeg)},
                             {QStringLiteral("pitch"), tidy(c.pitchDeg)},
@@ -513,8 +510,8 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
                             {QStringLiteral("fov"), tidy(c.fovYDeg)},
                             {QStringLiteral("target"), toJson(c.target)}});
   }
-  if (preset.view.light) {
-    const DirectionalLight& l = *preset.view.light;
+  if (state.light) {
+    const DirectionalLight& l = *state.light;
     view.insert(QStringLiteral("light"),
                 QJsonObject{{QStringLiteral("azimuth"), tidy(l.azimuthDeg)},
                             {QStringLiteral("elevation"), tidy(l.elevationDeg)},
@@ -522,14 +519,14 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
                             {QStringLiteral("intensity"), tidy(l.intensity)},
                             {QStringLiteral("ambient"), tidy(l.ambient)}});
   }
-  if (preset.view.display) {
-    const DisplayTransform& d = *preset.view.display;
+  if (state.display) {
+    const DisplayTransform& d = *state.display;
     view.insert(QStringLiteral("display"),
                 QJsonObject{{QStringLiteral("exposure"), tidy(d.exposureEv)},
                             {QStringLiteral("toneMapping"), qstr(toneMapperName(d.toneMapper))}});
   }
-  if (preset.view.environment) {
-    const Environment& e = *preset.view.environment;
+  if (state.environment) {
+    const Environment& e = *state.environment;
     const QString source = QString::fromStdString(e.source);
     view.insert(
         QStringLiteral("environment"),
@@ -539,6 +536,37 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
                     {QStringLiteral("rotation"), tidy(e.rotationDeg)},
                     {QStringLiteral("background"), qstr(backgroundName(e.background))}});
   }
+  return view;
+}
+
+}  // namespace
+
+Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
+  const Material& material = preset.material;
+  SavedPreset saved;
+
+  // Start from what was read, so unknown keys (top level, per map, per parameter) survive.
+  QJsonObject root = preset.preserved;
+  root.insert(QStringLiteral("format"), qstr(kPresetFormatName));
+  root.insert(QStringLiteral("version"), kPresetVersion);
+  if (!material.name().empty()) {
+    root.insert(QStringLiteral("name"), QString::fromStdString(material.name()));
+  }
+  Result<QJsonObject> maps =
+      mapsJson(preset, path, root.value(QStringLiteral("maps")).toObject(), saved);
+  if (!maps)
+    return makeError(maps.error());
+  root.insert(QStringLiteral("maps"), maps.value());
+  root.insert(QStringLiteral("technique"), qstr(techniqueName(material.technique())));
+  QJsonObject parameters = root.value(QStringLiteral("parameters")).toObject();
+  for (const ParameterSpec& spec : allParameters()) {
+    parameters.insert(qstr(spec.name), parameterJson(spec, material.parameter(spec.id)));
+  }
+  root.insert(QStringLiteral("parameters"), parameters);
+
+  const QJsonObject view =
+      viewJson(preset.view, QFileInfo(QString::fromStdString(path)).absoluteDir(),
+               root.value(QStringLiteral("view")).toObject());
   if (view.isEmpty()) {
     root.remove(QStringLiteral("view"));
   } else {
@@ -554,4 +582,4 @@ Result<SavedPreset> savePreset(const Preset& preset, const std::string& path) {
   return saved;
 }
 
-}  // namespace relief::core::inline material
+}  // namespace relief::core::inline preset

@@ -1,9 +1,9 @@
-#include "core/material/OrmTexture.h"
+#include "core/preset/OrmTexture.h"
 
 #include "core/compression/MapFile.h"
 #include "core/generators/ChannelPacking.h"
 
-namespace relief::core::inline material {
+namespace relief::core::inline preset {
 
 Result<std::vector<ChannelMap>> loadOrmTexture(const std::string& path) {
   Result<Image> image = loadMapFile(path);
@@ -20,4 +20,4 @@ Result<std::vector<ChannelMap>> loadOrmTexture(const std::string& path) {
   return maps;
 }
 
-}  // namespace relief::core::inline material
+}  // namespace relief::core::inline preset
