@@ -172,6 +172,158 @@ class UnityWriter {
   std::string m_stem;
 };
 
+// The material's maps as Unity textures with .meta files, and the keywords they switch on;
+// `masks` is the packed metallic/smoothness (URP) or mask map (HDRP), if the material has one.
+Status writeUnityTextures(UnityWriter& writer, const Material& material, bool urp,
+                          UnityMaterial& mat, std::optional<Image>& masks) {
+  const auto add = [&](Result<UnityTexture> texture) -> Status {
+    if (!texture)
+      return makeError(texture.error());
+    mat.textures.push_back(texture.value());
+    return {};
+  };
+  if (const Image* color = material.image(MapSlot::Color)) {
+    // Both pipelines keep _MainTex for scripts written for the built-in pipeline.
+    Result<UnityTexture> base = writer.texture(urp ? "_BaseMap" : "_BaseColorMap", "BaseMap",
+                                               *color, SampleFormat::UInt8, true, false);
+    if (!base)
+      return makeError(base.error());
+    mat.textures.push_back(base.value());
+    mat.textures.push_back({"_MainTex", base->file, base->guid});
+  }
+  const bool yDown = material.parameterFlag(ParamId::NormalYDown);
+  if (const Image* normals = material.image(MapSlot::Normal)) {
+    // Unity's normal maps are +Y up (OpenGL).
+    if (Status s =
+            add(writer.texture(urp ? "_BumpMap" : "_NormalMap", "Normal",
+                               openGlNormalMap(*normals, yDown), SampleFormat::UInt8, false, true));
+        !s)
+      return makeError(s.error());
+    mat.keywords.push_back("_NORMALMAP");
+    if (!urp)
+      mat.keywords.push_back("_NORMALMAP_TANGENT_SPACE");
+  }
+  masks = packEngineMasks(material, urp ? "unity-metallic" : "unity-mask");
+  if (masks) {
+    if (Status s = add(writer.texture(urp ? "_MetallicGlossMap" : "_MaskMap",
+                                      urp ? "MetallicSmoothness" : "MaskMap", *masks,
+                                      SampleFormat::UInt8, false, false));
+        !s)
+      return makeError(s.error());
+    mat.keywords.push_back(urp ? "_METALLICSPECGLOSSMAP" : "_MASKMAP");
+  }
+  const Image* occlusion = material.image(MapSlot::AmbientOcclusion);
+  if (urp && occlusion) {
+    // URP reads occlusion from its own map's green channel; a grey map has it everywhere.
+    if (Status s = add(writer.texture("_OcclusionMap", "Occlusion", *occlusion, SampleFormat::UInt8,
+                                      false, false));
+        !s)
+      return makeError(s.error());
+    mat.keywords.push_back("_OCCLUSIONMAP");
+  }
+  if (exportsParallax(material)) {
+    const Image height = engineHeightMap(*material.image(MapSlot::Height),
+                                         material.parameterFlag(ParamId::HeightIsDepth));
+    if (Status s = add(writer.texture(urp ? "_ParallaxMap" : "_HeightMap", "Height", height,
+                                      SampleFormat::UInt16, false, false));
+        !s)
+      return makeError(s.error());
+  }
+  return {};
+}
+
+// URP Lit's properties, its one-step parallax and what it cannot express.
+void setUrpProperties(const Material& material, bool parallax, UnityMaterial& mat,
+                      std::vector<std::string>& notes) {
+  const double scale = material.parameter(ParamId::HeightScale);
+  const double bias = material.parameter(ParamId::HeightBias);
+  mat.floats.push_back({"_WorkflowMode", 1.0});  // metallic
+  mat.floats.push_back({"_SmoothnessTextureChannel", 0.0});
+  mat.floats.push_back({"_BumpScale", material.parameter(ParamId::NormalStrength)});
+  mat.floats.push_back({"_OcclusionStrength", 1.0});
+  mat.floats.push_back({"_Surface", 0.0});
+  mat.floats.push_back({"_Cull", 2.0});
+  if (parallax) {
+    const double amplitude = urpParallaxAmplitude(scale);
+    mat.keywords.push_back("_PARALLAXMAP");
+    mat.floats.push_back({"_Parallax", amplitude});
+    if (amplitude < 0.005 || amplitude > 0.08) {
+      notes.push_back("URP's Height Map slider spans 0.005-0.08; _Parallax " +
+                      engineNumber(amplitude) +
+                      " is stored as is and renders so, but touching the slider clamps it");
+    }
+    if (std::abs(bias + scale / 2) > 1e-6) {
+      notes.push_back("URP puts the middle of the relief on the surface; Relief's heightBias " +
+                      engineNumber(bias) + " puts it " + engineNumber(std::abs(bias + scale / 2)) +
+                      " texture widths " + (bias + scale / 2 < 0 ? "lower" : "higher") +
+                      ", which URP cannot express");
+    }
+    if (isOccludingRelief(material.technique())) {
+      notes.push_back(
+          "URP Lit has only single-step parallax (offset limiting with view.z + 0.42); "
+          "Relief's occluding relief needs HDRP's pixel displacement or a Shader Graph POM");
+    }
+  }
+}
+
+// HDRP Lit's properties, its pixel displacement (POM) and what it cannot express.
+void setHdrpProperties(const Material& material, bool parallax, UnityMaterial& mat,
+                       std::vector<std::string>& notes) {
+  const double scale = material.parameter(ParamId::HeightScale);
+  const double bias = material.parameter(ParamId::HeightBias);
+  mat.renderQueue = 2225;                      // HDRP Lit's opaque queue
+  mat.floats.push_back({"_MaterialID", 1.0});  // standard
+  mat.floats.push_back({"_NormalScale", material.parameter(ParamId::NormalStrength)});
+  mat.floats.push_back({"_NormalMapSpace", 0.0});
+  for (const char* remap : {"_MetallicRemap", "_SmoothnessRemap", "_AORemap"}) {
+    mat.floats.push_back({std::string(remap) + "Min", 0.0});
+    mat.floats.push_back({std::string(remap) + "Max", 1.0});
+  }
+  if (parallax) {
+    constexpr double kPrimitiveMetres = 1.0;
+    const double amplitudeCm = hdrpPomAmplitudeCentimetres(scale, kPrimitiveMetres);
+    const bool deep = isOccludingRelief(material.technique());
+    const auto samples = [&](ParamId id) {
+      return double(std::clamp(int(material.parameter(id)), 1, kHdrpMaxSamples));
+    };
+    mat.keywords.push_back("_HEIGHTMAP");
+    mat.keywords.push_back("_PIXEL_DISPLACEMENT");
+    mat.floats.push_back({"_DisplacementMode", 2.0});  // pixel displacement: HDRP's POM
+    mat.floats.push_back({"_HeightPoMAmplitude", amplitudeCm});
+    // What HDRP's material editor derives from the amplitude, set here so the material is
+    // right before anyone opens it: metres, and the top of the relief on the surface.
+    mat.floats.push_back({"_HeightAmplitude", amplitudeCm * 0.01});
+    mat.floats.push_back({"_HeightCenter", 1.0});
+    mat.floats.push_back({"_PPDPrimitiveLength", kPrimitiveMetres});
+    mat.floats.push_back({"_PPDPrimitiveWidth", kPrimitiveMetres});
+    mat.colors.push_back({"_InvPrimScale", "{r: 1, g: 1, b: 0, a: 0}"});
+    mat.floats.push_back({"_DisplacementLockTilingScale", 1.0});
+    mat.floats.push_back({"_PPDMinSamples", deep ? samples(ParamId::MinSamples) : 1.0});
+    mat.floats.push_back({"_PPDMaxSamples", deep ? samples(ParamId::MaxSamples) : 1.0});
+    mat.floats.push_back({"_PPDLodThreshold", 5.0});
+    const bool depthOffset = material.parameterFlag(ParamId::DepthOffset);
+    mat.floats.push_back({"_DepthOffsetEnable", depthOffset ? 1.0 : 0.0});
+    if (depthOffset)
+      mat.keywords.push_back("_DEPTHOFFSET_ON");
+    notes.push_back(
+        "HDRP measures the relief in centimetres on a primitive of _PPDPrimitiveLength x "
+        "_PPDPrimitiveWidth metres (set to 1 x 1 here, a 1 m quad): set them to the size "
+        "your mesh's texture spans to keep the depth");
+    if (std::abs(bias + scale) > 1e-6) {
+      notes.push_back("HDRP puts the top of the relief on the surface; heightBias " +
+                      engineNumber(bias) + " (not -heightScale) has no HDRP equivalent");
+    }
+    if (!deep) {
+      notes.push_back(
+          "HDRP has no single-step parallax: exported as pixel displacement with one sample");
+    }
+    if (material.parameter(ParamId::MaxSamples) > kHdrpMaxSamples && deep) {
+      notes.push_back("HDRP takes at most 64 samples; maxSamples " +
+                      engineNumber(material.parameter(ParamId::MaxSamples)) + " was lowered to 64");
+    }
+  }
+}
+
 }  // namespace
 
 double urpParallaxAmplitude(double heightScale) {
@@ -199,156 +351,22 @@ Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& 
   mat.name = stem;
   mat.shaderGuid = urp ? kUrpLitShaderGuid : kHdrpLitShaderGuid;
   mat.tiling = material.parameter(ParamId::Tiling);
-  const auto add = [&](Result<UnityTexture> texture) -> Status {
-    if (!texture)
-      return makeError(texture.error());
-    mat.textures.push_back(texture.value());
-    return {};
-  };
+  std::optional<Image> masks;
+  if (Status written = writeUnityTextures(writer, material, urp, mat, masks); !written)
+    return makeError(written.error());
 
-  if (const Image* color = material.image(MapSlot::Color)) {
-    // Both pipelines keep _MainTex for scripts written for the built-in pipeline.
-    Result<UnityTexture> base = writer.texture(urp ? "_BaseMap" : "_BaseColorMap", "BaseMap",
-                                               *color, SampleFormat::UInt8, true, false);
-    if (!base)
-      return makeError(base.error());
-    mat.textures.push_back(base.value());
-    mat.textures.push_back({"_MainTex", base->file, base->guid});
-  }
-  const bool yDown = material.parameterFlag(ParamId::NormalYDown);
-  if (const Image* normals = material.image(MapSlot::Normal)) {
-    // Unity's normal maps are +Y up (OpenGL).
-    if (Status s =
-            add(writer.texture(urp ? "_BumpMap" : "_NormalMap", "Normal",
-                               openGlNormalMap(*normals, yDown), SampleFormat::UInt8, false, true));
-        !s)
-      return makeError(s.error());
-    mat.keywords.push_back("_NORMALMAP");
-    if (!urp)
-      mat.keywords.push_back("_NORMALMAP_TANGENT_SPACE");
-  }
-  const double roughness = exportedRoughness(material);
-  const std::optional<Image> masks =
-      packEngineMasks(material, urp ? "unity-metallic" : "unity-mask");
-  if (masks) {
-    if (Status s = add(writer.texture(urp ? "_MetallicGlossMap" : "_MaskMap",
-                                      urp ? "MetallicSmoothness" : "MaskMap", *masks,
-                                      SampleFormat::UInt8, false, false));
-        !s)
-      return makeError(s.error());
-    mat.keywords.push_back(urp ? "_METALLICSPECGLOSSMAP" : "_MASKMAP");
-  }
-  const Image* occlusion = material.image(MapSlot::AmbientOcclusion);
-  if (urp && occlusion) {
-    // URP reads occlusion from its own map's green channel; a grey map has it everywhere.
-    if (Status s = add(writer.texture("_OcclusionMap", "Occlusion", *occlusion, SampleFormat::UInt8,
-                                      false, false));
-        !s)
-      return makeError(s.error());
-    mat.keywords.push_back("_OCCLUSIONMAP");
-  }
-  const bool parallax = exportsParallax(material);
-  if (parallax) {
-    const Image height = engineHeightMap(*material.image(MapSlot::Height),
-                                         material.parameterFlag(ParamId::HeightIsDepth));
-    if (Status s = add(writer.texture(urp ? "_ParallaxMap" : "_HeightMap", "Height", height,
-                                      SampleFormat::UInt16, false, false));
-        !s)
-      return makeError(s.error());
-  }
-
-  const double scale = material.parameter(ParamId::HeightScale);
-  const double bias = material.parameter(ParamId::HeightBias);
   // Relief's smoothness when no map carries it: Unity's smoothness is 1 - perceptual roughness.
   // With a map, URP multiplies the map's alpha by _Smoothness and HDRP remaps the mask's alpha
   // from _SmoothnessRemapMin..Max, so those stay neutral.
   mat.floats.push_back({"_Metallic", exportedMetallic(material)});
-  mat.floats.push_back({"_Smoothness", masks ? 1.0 : 1.0 - roughness});
+  mat.floats.push_back({"_Smoothness", masks ? 1.0 : 1.0 - exportedRoughness(material)});
   mat.colors.push_back({"_BaseColor", "{r: 1, g: 1, b: 1, a: 1}"});
   mat.colors.push_back({"_Color", "{r: 1, g: 1, b: 1, a: 1}"});
-  if (urp) {
-    mat.floats.push_back({"_WorkflowMode", 1.0});  // metallic
-    mat.floats.push_back({"_SmoothnessTextureChannel", 0.0});
-    mat.floats.push_back({"_BumpScale", material.parameter(ParamId::NormalStrength)});
-    mat.floats.push_back({"_OcclusionStrength", 1.0});
-    mat.floats.push_back({"_Surface", 0.0});
-    mat.floats.push_back({"_Cull", 2.0});
-    if (parallax) {
-      const double amplitude = urpParallaxAmplitude(scale);
-      mat.keywords.push_back("_PARALLAXMAP");
-      mat.floats.push_back({"_Parallax", amplitude});
-      if (amplitude < 0.005 || amplitude > 0.08) {
-        result.notes.push_back(
-            "URP's Height Map slider spans 0.005-0.08; _Parallax " + engineNumber(amplitude) +
-            " is stored as is and renders so, but touching the slider clamps it");
-      }
-      if (std::abs(bias + scale / 2) > 1e-6) {
-        result.notes.push_back(
-            "URP puts the middle of the relief on the surface; Relief's heightBias " +
-            engineNumber(bias) + " puts it " + engineNumber(std::abs(bias + scale / 2)) +
-            " texture widths " + (bias + scale / 2 < 0 ? "lower" : "higher") +
-            ", which URP cannot express");
-      }
-      if (isOccludingRelief(material.technique())) {
-        result.notes.push_back(
-            "URP Lit has only single-step parallax (offset limiting with view.z + 0.42); "
-            "Relief's occluding relief needs HDRP's pixel displacement or a Shader Graph POM");
-      }
-    }
-  } else {
-    mat.renderQueue = 2225;                      // HDRP Lit's opaque queue
-    mat.floats.push_back({"_MaterialID", 1.0});  // standard
-    mat.floats.push_back({"_NormalScale", material.parameter(ParamId::NormalStrength)});
-    mat.floats.push_back({"_NormalMapSpace", 0.0});
-    for (const char* remap : {"_MetallicRemap", "_SmoothnessRemap", "_AORemap"}) {
-      mat.floats.push_back({std::string(remap) + "Min", 0.0});
-      mat.floats.push_back({std::string(remap) + "Max", 1.0});
-    }
-    if (parallax) {
-      constexpr double kPrimitiveMetres = 1.0;
-      const double amplitudeCm = hdrpPomAmplitudeCentimetres(scale, kPrimitiveMetres);
-      const bool deep = isOccludingRelief(material.technique());
-      const auto samples = [&](ParamId id) {
-        return double(std::clamp(int(material.parameter(id)), 1, kHdrpMaxSamples));
-      };
-      mat.keywords.push_back("_HEIGHTMAP");
-      mat.keywords.push_back("_PIXEL_DISPLACEMENT");
-      mat.floats.push_back({"_DisplacementMode", 2.0});  // pixel displacement: HDRP's POM
-      mat.floats.push_back({"_HeightPoMAmplitude", amplitudeCm});
-      // What HDRP's material editor derives from the amplitude, set here so the material is
-      // right before anyone opens it: metres, and the top of the relief on the surface.
-      mat.floats.push_back({"_HeightAmplitude", amplitudeCm * 0.01});
-      mat.floats.push_back({"_HeightCenter", 1.0});
-      mat.floats.push_back({"_PPDPrimitiveLength", kPrimitiveMetres});
-      mat.floats.push_back({"_PPDPrimitiveWidth", kPrimitiveMetres});
-      mat.colors.push_back({"_InvPrimScale", "{r: 1, g: 1, b: 0, a: 0}"});
-      mat.floats.push_back({"_DisplacementLockTilingScale", 1.0});
-      mat.floats.push_back({"_PPDMinSamples", deep ? samples(ParamId::MinSamples) : 1.0});
-      mat.floats.push_back({"_PPDMaxSamples", deep ? samples(ParamId::MaxSamples) : 1.0});
-      mat.floats.push_back({"_PPDLodThreshold", 5.0});
-      const bool depthOffset = material.parameterFlag(ParamId::DepthOffset);
-      mat.floats.push_back({"_DepthOffsetEnable", depthOffset ? 1.0 : 0.0});
-      if (depthOffset)
-        mat.keywords.push_back("_DEPTHOFFSET_ON");
-      result.notes.push_back(
-          "HDRP measures the relief in centimetres on a primitive of _PPDPrimitiveLength x "
-          "_PPDPrimitiveWidth metres (set to 1 x 1 here, a 1 m quad): set them to the size "
-          "your mesh's texture spans to keep the depth");
-      if (std::abs(bias + scale) > 1e-6) {
-        result.notes.push_back("HDRP puts the top of the relief on the surface; heightBias " +
-                               engineNumber(bias) + " (not -heightScale) has no HDRP equivalent");
-      }
-      if (!deep) {
-        result.notes.push_back(
-            "HDRP has no single-step parallax: exported as pixel displacement with one sample");
-      }
-      if (material.parameter(ParamId::MaxSamples) > kHdrpMaxSamples && deep) {
-        result.notes.push_back("HDRP takes at most 64 samples; maxSamples " +
-                               engineNumber(material.parameter(ParamId::MaxSamples)) +
-                               " was lowered to 64");
-      }
-    }
-  }
+  const bool parallax = exportsParallax(material);
+  if (urp)
+    setUrpProperties(material, parallax, mat, result.notes);
+  else
+    setHdrpProperties(material, parallax, mat, result.notes);
 
   const std::filesystem::path directory(folder);
   const std::string matFile = stem + ".mat";

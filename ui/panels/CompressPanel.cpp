@@ -50,6 +50,18 @@ QString qualityText(const core::CompressionOutcome& outcome) {
 CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWidget* parent)
     : QWidget(parent), m_document(document), m_viewDocument(view) {
   m_runner = new CompressionRunner(this);
+  // Created in the order Tab visits them: the formats, the options and actions, the results.
+  QGridLayout* formats = formatGrid();
+  createOptionsAndActions();
+  createResults();
+  layOut(formats);
+  connectSignals();
+  syncFromDocument();
+  showOutcomes();
+}
+
+// One row per map slot: its label, the formats that suit it and the quality.
+QGridLayout* CompressPanel::formatGrid() {
   auto* grid = new QGridLayout;
   grid->addWidget(new QLabel(tr("<b>Map</b>"), this), 0, 0);
   grid->addWidget(new QLabel(tr("<b>Format</b>"), this), 0, 1);
@@ -86,7 +98,10 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWi
             [this, slot] { writeChoice(slot); });
   }
   grid->setColumnStretch(1, 1);
+  return grid;
+}
 
+void CompressPanel::createOptionsAndActions() {
   m_mipmaps = new QCheckBox(tr("Mipmaps"), this);
   m_mipmaps->setToolTip(
       tr("A full mip chain: colour filtered in linear light, normals "
@@ -109,7 +124,10 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWi
   m_progress->setTextVisible(false);
   m_status = new QLabel(tr("Choose a format per map, then Compress."), this);
   m_status->setWordWrap(true);
+}
 
+// What the viewport shows, the results table and what can be done with a result.
+void CompressPanel::createResults() {
   m_view = new QComboBox(this);
   m_view->addItem(tr("Original maps"), int(ViewDocument::CompressedView::Original));
   m_view->addItem(tr("Compressed maps"), int(ViewDocument::CompressedView::Compressed));
@@ -136,7 +154,9 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWi
       tr("Compress the selected map (or the first one) in every format and chart the results"));
   m_saveButton = new QPushButton(tr("Save As…"), this);
   m_saveButton->setToolTip(tr("Save the selected compressed map as DDS or KTX2"));
+}
 
+void CompressPanel::layOut(QGridLayout* formats) {
   auto* actions = new QHBoxLayout;
   actions->addWidget(m_compress);
   actions->addWidget(m_cancel);
@@ -149,7 +169,7 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWi
   rowButtons->addWidget(m_saveButton);
 
   auto* layout = new QVBoxLayout(this);
-  layout->addLayout(grid);
+  layout->addLayout(formats);
   auto* options = new QHBoxLayout;
   options->addWidget(m_mipmaps);
   options->addStretch(1);
@@ -162,7 +182,9 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWi
   layout->addLayout(viewRow);
   layout->addWidget(m_results, 1);
   layout->addLayout(rowButtons);
+}
 
+void CompressPanel::connectSignals() {
   connect(m_compress, &QPushButton::clicked, this, &CompressPanel::compress);
   connect(m_cancel, &QPushButton::clicked, this, &CompressPanel::cancel);
   connect(m_compareButton, &QPushButton::clicked, this, &CompressPanel::openCompare);
@@ -177,32 +199,7 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWi
             m_progress->setValue(int(std::lround(fraction * 1000.0)));
             m_status->setText(tr("Compressing %1…").arg(what));
           });
-  connect(m_runner, &CompressionRunner::finished, this,
-          [this](const std::vector<core::CompressionOutcome>& outcomes) {
-            m_compress->setEnabled(true);
-            m_cancel->setEnabled(false);
-            m_progress->setValue(1000);
-            double seconds = 0.0;
-            for (const core::CompressionOutcome& outcome : outcomes) {
-              m_outcomes[outcome.job.slot] = outcome;
-              seconds += outcome.report.encodeSeconds;
-            }
-            dropStalePreviews();
-            QString status = tr("Compressed %n map(s) in %1 s.", nullptr, int(outcomes.size()))
-                                 .arg(seconds, 0, 'f', 2);
-            for (const core::CompressionOutcome& outcome : outcomes) {
-              for (const std::string& warning : outcome.warnings) {
-                status += tr(" The %1 map: %2.")
-                              .arg(toQString(core::mapSlotLabel(outcome.job.slot)).toLower(),
-                                   QString::fromStdString(warning));
-              }
-            }
-            m_status->setText(status);
-            if (m_view->currentIndex() == 0)
-              m_view->setCurrentIndex(2);  // show the wipe straight away
-            showOutcomes();
-            showPreviews();
-          });
+  connect(m_runner, &CompressionRunner::finished, this, &CompressPanel::showFinished);
   connect(m_runner, &CompressionRunner::cancelled, this, [this] {
     m_compress->setEnabled(true);
     m_cancel->setEnabled(false);
@@ -224,8 +221,32 @@ CompressPanel::CompressPanel(MaterialDocument* document, ViewDocument* view, QWi
     dropStalePreviews();
   });
   connect(m_document, &MaterialDocument::compressionChanged, this, [this] { syncFromDocument(); });
-  syncFromDocument();
+}
+
+void CompressPanel::showFinished(const std::vector<core::CompressionOutcome>& outcomes) {
+  m_compress->setEnabled(true);
+  m_cancel->setEnabled(false);
+  m_progress->setValue(1000);
+  double seconds = 0.0;
+  for (const core::CompressionOutcome& outcome : outcomes) {
+    m_outcomes[outcome.job.slot] = outcome;
+    seconds += outcome.report.encodeSeconds;
+  }
+  dropStalePreviews();
+  QString status =
+      tr("Compressed %n map(s) in %1 s.", nullptr, int(outcomes.size())).arg(seconds, 0, 'f', 2);
+  for (const core::CompressionOutcome& outcome : outcomes) {
+    for (const std::string& warning : outcome.warnings) {
+      status += tr(" The %1 map: %2.")
+                    .arg(toQString(core::mapSlotLabel(outcome.job.slot)).toLower(),
+                         QString::fromStdString(warning));
+    }
+  }
+  m_status->setText(status);
+  if (m_view->currentIndex() == 0)
+    m_view->setCurrentIndex(2);  // show the wipe straight away
   showOutcomes();
+  showPreviews();
 }
 
 CompressPanel::~CompressPanel() {

@@ -18,6 +18,7 @@
 #include <optional>
 
 class QCheckBox;
+class QGridLayout;
 class QSpinBox;
 class QComboBox;
 class QLabel;
@@ -61,6 +62,14 @@ class CompressPanel : public QWidget {
     QComboBox* format = nullptr;
     QComboBox* quality = nullptr;
   };
+  // The constructor's parts, in order.
+  QGridLayout* formatGrid();
+  void createOptionsAndActions();
+  void createResults();
+  void layOut(QGridLayout* formats);
+  void connectSignals();
+
+  void showFinished(const std::vector<core::CompressionOutcome>& outcomes);
   void syncFromDocument();
   void writeChoice(core::MapSlot slot);
   void dropStalePreviews();
