@@ -1,6 +1,8 @@
 // BatchCommand; see BatchCommand.h.
 #include "BatchCommand.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "CliCommands.h"
 #include "CliCommon.h"
 #include "TerminalProgress.h"
@@ -157,7 +159,7 @@ int runBatch(const QStringList& arguments, JobRunner renderJob) {
   if (!renderJob && std::any_of(jobs.begin(), jobs.end(), isRender))
     return kBatchNeedsRenderer;
 
-  const bool json = parser.isSet(QStringLiteral("json"));
+  const bool json = parser.isSet(option::kJson);
   // With --json, standard output is the summary alone: the jobs' notes ("wrote ...") are held
   // back; their errors still go to standard error.
   if (json)

@@ -1,6 +1,8 @@
 // CliCommon; see CliCommon.h.
 #include "CliCommon.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "core/mesh/MeshImport.h"
 #include "core/mesh/MeshPrimitives.h"
 
@@ -148,7 +150,7 @@ std::optional<int> integerOption(const QCommandLineParser& parser, const QString
 }
 
 CliOption jsonOption() {
-  return {QStringLiteral("json"),
+  return {option::kJson,
           {},
           QStringLiteral("Print the result as one JSON object on standard output."),
           {}};
@@ -160,7 +162,7 @@ void printJson(const QJsonObject& object) {
 }
 
 CliOption strictOption(const QString& doing) {
-  return {QStringLiteral("strict"),
+  return {option::kStrict,
           {},
           QStringLiteral("Fail when the preset has problems (a missing or unreadable map, a "
                          "clamped value) instead of %1 what loaded.")

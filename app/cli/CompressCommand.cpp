@@ -1,6 +1,8 @@
 // CompressCommand; see CompressCommand.h.
 #include "CompressCommand.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "CliCommon.h"
 #include "TerminalProgress.h"
 #include "core/compression/CompressionJob.h"
@@ -51,16 +53,16 @@ core::Result<Candidate> loadCandidate(const std::string& path) {
 
 CliOptions slotOptions() {
   return {
-      {QStringLiteral("normal"),
+      {option::kNormal,
        {},
        QStringLiteral("The map is a normal map (tangent space, 0.5 + 0.5 n): angular error is "
                       "measured."),
        {}},
-      {QStringLiteral("height"),
+      {option::kHeight,
        {},
        QStringLiteral("The map is a height map: the error is also given as parallax shift."),
        {}},
-      {QStringLiteral("height-scale"), QStringLiteral("scale"),
+      {option::kHeightScale, QStringLiteral("scale"),
        QStringLiteral("Parallax height scale for the shift."),
        QString::number(kDefaultHeightScale)},
   };
@@ -68,31 +70,28 @@ CliOptions slotOptions() {
 
 CliOptions compressOptions() {
   CliOptions options = {
-      {QStringLiteral("in"), QStringLiteral("file"), QStringLiteral("The map."), {}},
-      {QStringLiteral("format"), QStringLiteral("format"), formatNames(), {}},
-      {QStringLiteral("quality"), QStringLiteral("quality"),
+      {option::kIn, QStringLiteral("file"), QStringLiteral("The map."), {}},
+      {option::kFormat, QStringLiteral("format"), formatNames(), {}},
+      {option::kQuality, QStringLiteral("quality"),
        QStringLiteral("fast|normal|best: the search depth of Relief's BC, ETC2 and EAC encoders; "
                       "astcenc's fast, medium and thorough presets."),
        QStringLiteral("normal")},
-      {QStringLiteral("mips"),
+      {option::kMips,
        {},
        QStringLiteral("Write a full mip chain, each level filtered for the map's kind."),
        {}},
-      {QStringLiteral("out"),
-       QStringLiteral("file"),
-       QStringLiteral("Output .dds or .ktx2 file."),
-       {}},
-      {QStringLiteral("zstd"), QStringLiteral("level"),
+      {option::kOut, QStringLiteral("file"), QStringLiteral("Output .dds or .ktx2 file."), {}},
+      {option::kZstd, QStringLiteral("level"),
        QStringLiteral("KTX2 only: supercompress the levels with Zstandard at this level "
                       "(1 fastest .. 22 smallest; 0 none). Lossless: the GPU gets the same "
                       "blocks, the file and the download are smaller."),
        QStringLiteral("0")},
-      {QStringLiteral("perceptual"),
+      {option::kPerceptual,
        {},
        QStringLiteral("BC1-BC3 colour: weigh the error by luminance (Rec. 709) instead of "
                       "alike per channel, as PSNR measures it."),
        {}},
-      {QStringLiteral("metrics"),
+      {option::kMetrics,
        QStringLiteral("text|json"),
        QStringLiteral("Print the quality metrics: text or json (on standard output)."),
        {}},
@@ -103,9 +102,9 @@ CliOptions compressOptions() {
 }
 
 std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser) {
-  if (parser.isSet(QStringLiteral("normal")))
+  if (parser.isSet(option::kNormal))
     return core::MapSlot::Normal;
-  if (parser.isSet(QStringLiteral("height")))
+  if (parser.isSet(option::kHeight))
     return core::MapSlot::Height;
   return std::nullopt;
 }
@@ -114,30 +113,29 @@ std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser) {
 std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJob& job,
                             std::string& outPath) {
   const std::optional<core::TextureFormat> format =
-      core::findTextureFormat(parser.value(QStringLiteral("format")).toStdString());
+      core::findTextureFormat(parser.value(option::kFormat).toStdString());
   if (!format) {
     printError(QStringLiteral("--format: unknown format '%1' (one of %2)")
-                   .arg(parser.value(QStringLiteral("format")), formatNames()));
+                   .arg(parser.value(option::kFormat), formatNames()));
     return kExitUsage;
   }
-  const auto quality =
-      core::findCompressionQuality(parser.value(QStringLiteral("quality")).toStdString());
+  const auto quality = core::findCompressionQuality(parser.value(option::kQuality).toStdString());
   if (!quality) {
     printError(QStringLiteral("--quality: '%1' is not fast, normal or best")
-                   .arg(parser.value(QStringLiteral("quality"))));
+                   .arg(parser.value(option::kQuality)));
     return kExitUsage;
   }
-  const QString metrics = parser.value(QStringLiteral("metrics"));
-  if (parser.isSet(QStringLiteral("metrics")) && metrics != QStringLiteral("json") &&
+  const QString metrics = parser.value(option::kMetrics);
+  if (parser.isSet(option::kMetrics) && metrics != QStringLiteral("json") &&
       metrics != QStringLiteral("text")) {
     printError(QStringLiteral("--metrics: '%1' is not text or json").arg(metrics));
     return kExitUsage;
   }
   const std::optional<double> heightScale =
-      numberOption(parser, QStringLiteral("height-scale"), kDefaultHeightScale);
+      numberOption(parser, option::kHeightScale, kDefaultHeightScale);
   if (!heightScale)
     return kExitUsage;
-  outPath = parser.value(QStringLiteral("out")).toStdString();
+  outPath = parser.value(option::kOut).toStdString();
   const std::optional<core::TextureContainer> container = core::containerForPath(outPath);
   if (!container) {
     printError(QString::fromStdString(outPath) +
@@ -151,7 +149,7 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
     return kExitUsage;
   }
   const std::optional<int> zstdLevel =
-      integerOption(parser, QStringLiteral("zstd"), 0, 0, core::kMaxZstdLevel);
+      integerOption(parser, option::kZstd, 0, 0, core::kMaxZstdLevel);
   if (!zstdLevel)
     return kExitUsage;
   if (*zstdLevel > 0 && *container != core::TextureContainer::Ktx2) {
@@ -159,7 +157,7 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
                QStringLiteral(": --zstd is a KTX2 feature; DDS has no supercompression"));
     return kExitUsage;
   }
-  const std::string inPath = parser.value(QStringLiteral("in")).toStdString();
+  const std::string inPath = parser.value(option::kIn).toStdString();
   core::Result<core::Image> map = core::loadMapFile(inPath);
   if (!map) {
     printError(QString::fromStdString(map.error()));
@@ -169,10 +167,10 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
   job.slot = slotOption(parser).value_or(
       core::isSingleChannelFormat(*format) ? core::MapSlot::Height : core::MapSlot::Color);
   job.map = std::make_shared<const core::Image>(std::move(map).value());
-  job.settings = {*format, *quality, parser.isSet(QStringLiteral("mips")), *zstdLevel,
-                  parser.isSet(QStringLiteral("perceptual"))};
+  job.settings = {*format, *quality, parser.isSet(option::kMips), *zstdLevel,
+                  parser.isSet(option::kPerceptual)};
   job.heightScale = *heightScale;
-  job.measure = parser.isSet(QStringLiteral("metrics"));
+  job.measure = parser.isSet(option::kMetrics);
   if (const std::string problem = core::formatSlotProblem(*format, job.slot); !problem.empty()) {
     printError(QString::fromStdString(inPath + ": " + problem) +
                QStringLiteral("; pass --normal or --height if the map is one, or choose another "
@@ -193,9 +191,7 @@ int runCompress(const QStringList& arguments) {
                               QStringLiteral("relief-cli compress --in MAP --format FORMAT "
                                              "--out MAP.dds|MAP.ktx2 [options]")))
     return *exit;
-  if (!missingOptions(parser,
-                      {QStringLiteral("in"), QStringLiteral("out"), QStringLiteral("format")})
-           .isEmpty()) {
+  if (!missingOptions(parser, {option::kIn, option::kOut, option::kFormat}).isEmpty()) {
     printError(QStringLiteral("compress needs --in MAP, --format FORMAT and --out FILE"));
     return kExitUsage;
   }
@@ -203,10 +199,10 @@ int runCompress(const QStringList& arguments) {
   std::string outPath;
   if (auto exit = buildJob(parser, job, outPath))
     return *exit;
-  const QString inPath = parser.value(QStringLiteral("in"));
+  const QString inPath = parser.value(option::kIn);
   core::Result<core::CompressionOutcome> outcome = [&] {
     TerminalProgress progress(QStringLiteral("compress ") +
-                              QFileInfo(parser.value(QStringLiteral("in"))).fileName());
+                              QFileInfo(parser.value(option::kIn)).fileName());
     return core::runCompressionJob(job, progress.control());
   }();
   if (!outcome) {
@@ -232,7 +228,7 @@ int runCompress(const QStringList& arguments) {
                   .arg(texture.byteSize())
                   .arg(QFileInfo(QString::fromStdString(outPath)).size())
                   .arg(outcome->report.encodeSeconds, 0, 'f', 2));
-  } else if (parser.value(QStringLiteral("metrics")) == QStringLiteral("json")) {
+  } else if (parser.value(option::kMetrics) == QStringLiteral("json")) {
     printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(outcome->report)).toJson()));
   } else {
     printOut(QString::fromStdString(core::reportToText(outcome->report)));
@@ -246,21 +242,20 @@ int runDecode(const QStringList& arguments) {
       "Decode a DDS or KTX2 file to an image: the map it holds (normal Z rebuilt from X and Y "
       "for two-channel formats), or with --raw the RGBA texels a GPU samples."));
   parser.addPositionalArgument(QStringLiteral("texture"), QStringLiteral(".dds or .ktx2 file"));
-  addOptions(parser,
-             {{QStringLiteral("out"), QStringLiteral("file"), QStringLiteral("Output image."), {}},
-              {QStringLiteral("level"), QStringLiteral("n"), QStringLiteral("Mip level."),
-               QStringLiteral("0")},
-              {QStringLiteral("raw"), {}, QStringLiteral("Write the texels unchanged."), {}},
-              jsonOption()});
+  addOptions(parser, {{option::kOut, QStringLiteral("file"), QStringLiteral("Output image."), {}},
+                      {option::kLevel, QStringLiteral("n"), QStringLiteral("Mip level."),
+                       QStringLiteral("0")},
+                      {option::kRaw, {}, QStringLiteral("Write the texels unchanged."), {}},
+                      jsonOption()});
   if (auto exit = parseOrExit(parser, arguments,
                               QStringLiteral("relief-cli decode F.dds|F.ktx2 --out F.png")))
     return *exit;
-  if (parser.positionalArguments().size() != 1 || !parser.isSet(QStringLiteral("out"))) {
+  if (parser.positionalArguments().size() != 1 || !parser.isSet(option::kOut)) {
     printError(QStringLiteral("decode takes one .dds or .ktx2 file and --out FILE"));
     return kExitUsage;
   }
   const std::optional<int> level =
-      integerOption(parser, QStringLiteral("level"), 0, 0, std::numeric_limits<int>::max());
+      integerOption(parser, option::kLevel, 0, 0, std::numeric_limits<int>::max());
   if (!level)
     return kExitUsage;
   const std::string path = parser.positionalArguments().front().toStdString();
@@ -269,19 +264,19 @@ int runDecode(const QStringList& arguments) {
     printError(QString::fromStdString(texture.error()));
     return kExitFailure;
   }
-  core::Result<core::Image> image = parser.isSet(QStringLiteral("raw"))
+  core::Result<core::Image> image = parser.isSet(option::kRaw)
                                         ? core::decodeLevel(texture.value(), *level)
                                         : core::decodeAsMap(texture.value(), *level);
   if (!image) {
     printError(QString::fromStdString(path + ": " + image.error()));
     return kExitFailure;
   }
-  const std::string out = parser.value(QStringLiteral("out")).toStdString();
+  const std::string out = parser.value(option::kOut).toStdString();
   if (core::Status saved = core::saveImage(image.value(), out); !saved) {
     printError(QString::fromStdString(saved.error()));
     return kExitFailure;
   }
-  if (parser.isSet(QStringLiteral("json"))) {
+  if (parser.isSet(option::kJson)) {
     printJson({{QStringLiteral("output"), QString::fromStdString(out)},
                {QStringLiteral("format"), qstr(core::textureFormatInfo(texture->format).name)},
                {QStringLiteral("width"), image->width()},
@@ -310,7 +305,7 @@ int runCompare(const QStringList& arguments) {
   parser.addPositionalArgument(QStringLiteral("candidate"),
                                QStringLiteral("An image or a .dds/.ktx2 file."));
   CliOptions options = slotOptions();
-  options.push_back({QStringLiteral("json"), {}, QStringLiteral("Print the metrics as JSON."), {}});
+  options.push_back({option::kJson, {}, QStringLiteral("Print the metrics as JSON."), {}});
   addOptions(parser, options);
   if (auto exit =
           parseOrExit(parser, arguments,
@@ -321,7 +316,7 @@ int runCompare(const QStringList& arguments) {
     return kExitUsage;
   }
   const std::optional<double> heightScale =
-      numberOption(parser, QStringLiteral("height-scale"), kDefaultHeightScale);
+      numberOption(parser, option::kHeightScale, kDefaultHeightScale);
   if (!heightScale)
     return kExitUsage;
   const std::string referencePath = parser.positionalArguments()[0].toStdString();
@@ -360,7 +355,7 @@ int runCompare(const QStringList& arguments) {
     report.size = core::measureSize(candidate->texture->format, reference->channels(),
                                     candidate->texture->byteSize());
   }
-  if (parser.isSet(QStringLiteral("json")))
+  if (parser.isSet(option::kJson))
     printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(report)).toJson()));
   else
     printOut(QString::fromStdString(core::reportToText(report)));

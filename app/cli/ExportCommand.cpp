@@ -2,6 +2,8 @@
 // (core/exporters/Exporter.h); this file parses the options and prints what was written.
 #include "ExportCommand.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "CliCommon.h"
 #include "TerminalProgress.h"
 #include "core/exporters/Exporter.h"
@@ -26,22 +28,22 @@ QString description() {
 
 CliOptions options() {
   return {
-      {QStringLiteral("preset"), QStringLiteral("file"), QStringLiteral("The .relief preset."), {}},
-      {QStringLiteral("to"), QStringLiteral("kind"), names(core::allExportKinds()) + ".", {}},
-      {QStringLiteral("out"),
+      {option::kPreset, QStringLiteral("file"), QStringLiteral("The .relief preset."), {}},
+      {option::kTo, QStringLiteral("kind"), names(core::allExportKinds()) + ".", {}},
+      {option::kOut,
        QStringLiteral("folder"),
        QStringLiteral("The folder to write (created if needed)."),
        {}},
-      {QStringLiteral("mesh"),
+      {option::kMesh,
        QStringLiteral("name|file"),
        QStringLiteral("gltf: plane, cube, sphere, cylinder, torus or a mesh file (default: the "
                       "preset's mesh, else plane)."),
        {}},
-      {QStringLiteral("maps"), QStringLiteral("format"),
+      {option::kMaps, QStringLiteral("format"),
        QStringLiteral("package: data maps as %1; the colour map stays 8-bit sRGB PNG.")
            .arg(names(core::packageMapFormats())),
        qstr(core::packageMapFormats().front().name)},
-      {QStringLiteral("textures"), QStringLiteral("container"),
+      {option::kTextures, QStringLiteral("container"),
        QStringLiteral("package: maps with a compression choice in the preset are also written "
                       "compressed: %1 (dds holds the BC formats; KTX2 the rest).")
            .arg(names(core::packageTextureChoices())),
@@ -54,33 +56,31 @@ CliOptions options() {
 // The request from the options and the preset; an exit code when they are wrong.
 std::optional<int> buildRequest(const QCommandLineParser& parser, core::ExportRequest& request) {
   const std::optional<core::ExportKind> kind =
-      namedOption(parser, QStringLiteral("to"), core::allExportKinds(),
+      namedOption(parser, option::kTo, core::allExportKinds(),
                   [](const core::ExportKindInfo& info) { return info.kind; });
-  const auto mapFormat = namedOption(parser, QStringLiteral("maps"), core::packageMapFormats());
-  const auto textures =
-      namedOption(parser, QStringLiteral("textures"), core::packageTextureChoices());
+  const auto mapFormat = namedOption(parser, option::kMaps, core::packageMapFormats());
+  const auto textures = namedOption(parser, option::kTextures, core::packageTextureChoices());
   if (!kind || !mapFormat || !textures)
     return kExitUsage;
   request.kind = *kind;
-  request.folder = parser.value(QStringLiteral("out")).toStdString();
+  request.folder = parser.value(option::kOut).toStdString();
   request.package = {*mapFormat, *textures};
 
   core::Result<core::LoadedPreset> loaded =
-      core::loadPreset(parser.value(QStringLiteral("preset")).toStdString());
+      core::loadPreset(parser.value(option::kPreset).toStdString());
   if (!loaded) {
     printError(QString::fromStdString(loaded.error()));
     return kExitFailure;
   }
-  if (!acceptPresetProblems(loaded->warnings, parser.isSet(QStringLiteral("strict"))))
+  if (!acceptPresetProblems(loaded->warnings, parser.isSet(option::kStrict)))
     return kExitFailure;
   request.preset = std::move(loaded->preset);
   if (core::exportKindInfo(request.kind).usesMesh) {
-    const bool fromPreset = !parser.isSet(QStringLiteral("mesh"));
-    const QString meshName = fromPreset ? QString::fromStdString(request.preset.view.mesh)
-                                        : parser.value(QStringLiteral("mesh"));
+    const bool fromPreset = !parser.isSet(option::kMesh);
+    const QString meshName =
+        fromPreset ? QString::fromStdString(request.preset.view.mesh) : parser.value(option::kMesh);
     const QString namedBy =
-        fromPreset ? parser.value(QStringLiteral("preset")) + QStringLiteral(": view.mesh")
-                   : QString();
+        fromPreset ? parser.value(option::kPreset) + QStringLiteral(": view.mesh") : QString();
     if (auto exit = resolveMesh(meshName, request.mesh, namedBy))
       return *exit;
   }
@@ -99,8 +99,7 @@ int runExport(const QStringList& arguments) {
                                   .arg(names(core::allExportKinds())))) {
     return *exit;
   }
-  if (const QString missing = missingOptions(
-          parser, {QStringLiteral("preset"), QStringLiteral("to"), QStringLiteral("out")});
+  if (const QString missing = missingOptions(parser, {option::kPreset, option::kTo, option::kOut});
       !missing.isEmpty()) {
     printError(QStringLiteral("export needs %1 (see --help)").arg(missing));
     return kExitUsage;
@@ -117,7 +116,7 @@ int runExport(const QStringList& arguments) {
     printError(QString::fromStdString(written.error()));
     return kExitFailure;
   }
-  if (parser.isSet(QStringLiteral("json"))) {
+  if (parser.isSet(option::kJson)) {
     QJsonArray notes;
     for (const std::string& note : written->notes)
       notes.append(QString::fromStdString(note));

@@ -1,6 +1,8 @@
 // GenerateCommand; see GenerateCommand.h.
 #include "GenerateCommand.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "CliCommon.h"
 #include "TerminalProgress.h"
 #include "core/compression/MapFile.h"
@@ -37,7 +39,7 @@ CliOptions generatorOptions(const core::GeneratorInfo& info) {
     options.push_back(
         {qstr(input.name), QStringLiteral("file"), qstr(input.label) + QLatin1Char('.'), {}});
   options.push_back(
-      {QStringLiteral("out"),
+      {option::kOut,
        QStringLiteral("file"),
        QStringLiteral("Output: .png/.tif are written 16-bit, .exr float, .jpg/.tga 8-bit with "
                       "dither."),
@@ -68,7 +70,7 @@ CliOptions generatorOptions(const core::GeneratorInfo& info) {
            {}});
     }
     options.push_back(
-        {QStringLiteral("swizzle"),
+        {option::kSwizzle,
          QStringLiteral("terms"),
          QStringLiteral("Any channel layout instead: one term per output channel, n. for the "
                         "normal map, h. for the height map, then r, g, b or a; or 0 or 1 (e.g. "
@@ -156,7 +158,7 @@ void reportGenerated(const QCommandLineParser& parser, std::string_view generato
                      const std::vector<std::string>& notes,
                      const std::optional<core::LevelsRange>& levels = std::nullopt,
                      const std::optional<double>& depthTexels = std::nullopt) {
-  if (!parser.isSet(QStringLiteral("json"))) {
+  if (!parser.isSet(option::kJson)) {
     for (const std::string& note : notes)
       printNote(QString::fromStdString(note) + QLatin1Char('\n'));
     return;
@@ -211,15 +213,15 @@ std::optional<int> runChannelPack(const QCommandLineParser& parser,
     maps.push_back({names[i], &images[i]});
   std::vector<std::string> terms;
   std::vector<std::string> substituted;
-  if (parser.isSet(QStringLiteral("layout"))) {
+  if (parser.isSet(option::kLayout)) {
     const core::PackLayout* layout =
-        core::findPackLayout(parser.value(QStringLiteral("layout")).toStdString());
+        core::findPackLayout(parser.value(option::kLayout).toStdString());
     if (!layout) {
       QStringList known;
       for (const core::PackLayout& entry : core::packLayouts())
         known << qstr(entry.name);
       printError(QStringLiteral("--layout %1: expected %2")
-                     .arg(parser.value(QStringLiteral("layout")), known.join(QLatin1Char('|'))));
+                     .arg(parser.value(option::kLayout), known.join(QLatin1Char('|'))));
       return kExitUsage;
     }
     terms = core::resolveLayoutTerms(*layout, maps, &substituted);
@@ -241,7 +243,7 @@ std::optional<int> runChannelPack(const QCommandLineParser& parser,
     printError(QStringLiteral("generate pack: ") + QString::fromStdString(packed.error()));
     return kExitUsage;
   }
-  const QString outPath = parser.value(QStringLiteral("out"));
+  const QString outPath = parser.value(option::kOut);
   if (core::Status saved = core::saveImage(packed.value(), outPath.toStdString(),
                                            core::fullPrecisionFormatFor(outPath.toStdString()));
       !saved) {
@@ -277,7 +279,7 @@ std::optional<int> parseGenerator(QCommandLineParser& parser, const core::Genera
                    .arg(qstr(info.name), parser.positionalArguments().front()));
     return kExitUsage;
   }
-  if (!parser.isSet(QStringLiteral("out"))) {
+  if (!parser.isSet(option::kOut)) {
     printError(QStringLiteral("generate %1 needs --out FILE").arg(qstr(info.name)));
     return kExitUsage;
   }
@@ -333,17 +335,17 @@ int runGenerate(const QStringList& arguments) {
     return kExitFailure;
   }
   core::Image output = std::move(result->image);
-  if (*kind == core::GeneratorKind::Pack && parser.isSet(QStringLiteral("swizzle"))) {
+  if (*kind == core::GeneratorKind::Pack && parser.isSet(option::kSwizzle)) {
     if (images.front().isEmpty() || output.channels() != 4) {
       printError(
           QStringLiteral("--swizzle rearranges the normal-height layout: give --normal and "
                          "--height (or use --r, --g, --b, --a for other layouts)"));
       return kExitUsage;
     }
-    if (auto exit = swizzle(parser.value(QStringLiteral("swizzle")), images.front(), output))
+    if (auto exit = swizzle(parser.value(option::kSwizzle), images.front(), output))
       return *exit;
   }
-  const QString outPath = parser.value(QStringLiteral("out"));
+  const QString outPath = parser.value(option::kOut);
   if (core::Status saved = core::saveImage(output, outPath.toStdString(),
                                            core::fullPrecisionFormatFor(outPath.toStdString()));
       !saved) {

@@ -1,6 +1,8 @@
 // InfoCommand; see InfoCommand.h.
 #include "InfoCommand.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "CliCommon.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
@@ -75,7 +77,7 @@ int runInfo(const QStringList& arguments) {
   }
   const std::optional<core::MapSlot> slotByName =
       core::guessMapSlotFromFileName(QFileInfo(path).fileName().toStdString());
-  if (parser.isSet(QStringLiteral("json"))) {
+  if (parser.isSet(option::kJson)) {
     QJsonObject readAs;
     for (core::MapSlot slot : core::kAllMapSlots) {
       readAs.insert(qstr(core::mapSlotName(slot)),

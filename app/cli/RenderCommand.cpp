@@ -1,6 +1,8 @@
 // RenderCommand; see RenderCommand.h.
 #include "RenderCommand.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "../DisplayCheck.h"
 #include "CliCommon.h"
 #include "RenderLighting.h"
@@ -53,24 +55,18 @@ QString mapOptionName(core::MapSlot slot) {
 CliOptions renderOptions() {
   const QString file = QStringLiteral("file"), degrees = QStringLiteral("deg");
   CliOptions options = {
-      {QStringLiteral("out"),
-       file,
-       QStringLiteral("Output image (png, jpg, tga, tif, or exr)."),
-       {}},
-      {QStringLiteral("size"), QStringLiteral("WxH"), QStringLiteral("Image size in pixels."),
+      {option::kOut, file, QStringLiteral("Output image (png, jpg, tga, tif, or exr)."), {}},
+      {option::kSize, QStringLiteral("WxH"), QStringLiteral("Image size in pixels."),
        QStringLiteral("1280x720")},
-      {QStringLiteral("yaw"), degrees, QStringLiteral("Camera yaw around +Y in degrees."), {}},
-      {QStringLiteral("pitch"),
-       degrees,
-       QStringLiteral("Camera elevation in degrees (-89..89)."),
-       {}},
-      {QStringLiteral("distance"),
+      {option::kYaw, degrees, QStringLiteral("Camera yaw around +Y in degrees."), {}},
+      {option::kPitch, degrees, QStringLiteral("Camera elevation in degrees (-89..89)."), {}},
+      {option::kDistance,
        QStringLiteral("D"),
        QStringLiteral("Camera distance from the target (default: frames the mesh)."),
        {}},
-      {QStringLiteral("light-yaw"), degrees, QStringLiteral("Light azimuth in degrees."), {}},
-      {QStringLiteral("light-pitch"), degrees, QStringLiteral("Light elevation in degrees."), {}},
-      {QStringLiteral("set"),
+      {option::kLightYaw, degrees, QStringLiteral("Light azimuth in degrees."), {}},
+      {option::kLightPitch, degrees, QStringLiteral("Light elevation in degrees."), {}},
+      {option::kSet,
        QStringLiteral("name=value"),
        QStringLiteral("Set a material parameter (repeatable)."),
        {}},
@@ -85,27 +81,27 @@ CliOptions renderOptions() {
                                                       : QString()),
          {}});
   }
-  options.push_back({QStringLiteral("orm"),
+  options.push_back({option::kOrm,
                      file,
                      QStringLiteral("ORM texture: R ambient occlusion, G roughness, B metallic "
                                     "(glTF, Unreal; Poly Haven's arm). Fills those three maps; "
                                     "--ao, --roughness or --metallic given as well win."),
                      {}});
-  options.push_back({QStringLiteral("mesh"), QStringLiteral("name|file"),
+  options.push_back({option::kMesh, QStringLiteral("name|file"),
                      enumNames(core::allPrimitiveShapes(), core::primitiveShapeName) +
                          QStringLiteral(", or a mesh file (OBJ, FBX, glTF, ...)."),
                      QStringLiteral("plane")});
-  options.push_back({QStringLiteral("technique"),
+  options.push_back({option::kTechnique,
                      QStringLiteral("name"),
                      QStringLiteral("Overrides the preset's technique: ") +
                          enumNames(core::allTechniques(), core::techniqueName) + QLatin1Char('.'),
                      {}});
-  options.push_back({QStringLiteral("shading"),
+  options.push_back({option::kShading,
                      QStringLiteral("name"),
                      QStringLiteral("Overrides the preset's shading: classic (Blinn-Phong) or pbr "
                                     "(glTF metallic-roughness); as --set shading=NAME."),
                      {}});
-  options.push_back({QStringLiteral("view"), QStringLiteral("name"),
+  options.push_back({option::kView, QStringLiteral("name"),
                      QStringLiteral("What to render: ") +
                          enumNames(core::allDebugViews(), core::debugViewName) +
                          QStringLiteral(". error prints the UV error against the exact trace, "
@@ -117,7 +113,7 @@ CliOptions renderOptions() {
   options.push_back(strictOption(QStringLiteral("rendering")));
   options.push_back(jsonOption());
   options.push_back(
-      {QStringLiteral("stats"),
+      {option::kStats,
        {},
        QStringLiteral("Also measure the frame's cost and print it as one JSON object: "
                       "{\"frame_ms\": the median frame time, each frame drawn and finished "
@@ -129,7 +125,7 @@ CliOptions renderOptions() {
                       "\"pixels\": covered pixels}. With --json, in its object."),
        {}});
   options.push_back(
-      {QStringLiteral("format"),
+      {option::kFormat,
        QStringLiteral("png|exr"),
        QStringLiteral("png (8-bit colours, legends on heat maps) or exr (float: raw values of "
                       "data views such as uv, offset, steps, depth, error; the shading view's "
@@ -243,19 +239,19 @@ core::Result<core::Image> renderErrorView(renderer::OffscreenRenderer& offscreen
 
 // --out and --format: the file and whether it holds 8-bit colours or float values.
 std::optional<int> parseOutput(const QCommandLineParser& parser, RenderRequest& request) {
-  request.outPath = parser.value(QStringLiteral("out"));
+  request.outPath = parser.value(option::kOut);
   const QString outSuffix = QFileInfo(request.outPath).suffix().toLower();
   const QString format =
-      parser.isSet(QStringLiteral("format"))
-          ? parser.value(QStringLiteral("format")).toLower()
+      parser.isSet(option::kFormat)
+          ? parser.value(option::kFormat).toLower()
           : (outSuffix == QStringLiteral("exr") ? QStringLiteral("exr") : QStringLiteral("png"));
   if (format != QStringLiteral("png") && format != QStringLiteral("exr")) {
     printError(QStringLiteral("--format %1: expected png or exr").arg(format));
     return kExitUsage;
   }
   request.exr = format == QStringLiteral("exr");
-  request.json = parser.isSet(QStringLiteral("json"));
-  request.stats = parser.isSet(QStringLiteral("stats"));
+  request.json = parser.isSet(option::kJson);
+  request.stats = parser.isSet(option::kStats);
   const core::ImageFileType* type = core::imageFileTypeForPath(request.outPath.toStdString());
   if (request.exr && outSuffix != QStringLiteral("exr")) {
     printError(QStringLiteral("--out %1: --format exr writes an .exr file").arg(request.outPath));
@@ -279,14 +275,14 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
       printError(QString::fromStdString(loaded.error()));
       return kExitFailure;
     }
-    if (!acceptPresetProblems(loaded->warnings, parser.isSet(QStringLiteral("strict"))))
+    if (!acceptPresetProblems(loaded->warnings, parser.isSet(option::kStrict)))
       return kExitFailure;
     request.material = std::move(loaded->preset.material);
     request.presetView = loaded->preset.view;
     request.presetPath = positional.front();
   }
-  if (parser.isSet(QStringLiteral("orm"))) {
-    const QString path = parser.value(QStringLiteral("orm"));
+  if (parser.isSet(option::kOrm)) {
+    const QString path = parser.value(option::kOrm);
     core::Result<std::vector<core::ChannelMap>> maps = core::loadOrmTexture(path.toStdString());
     if (!maps) {
       printError(QString::fromStdString(maps.error()));
@@ -307,7 +303,7 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
 
 // --set, --technique, --shading and --view.
 std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderRequest& request) {
-  for (const QString& assignment : parser.values(QStringLiteral("set"))) {
+  for (const QString& assignment : parser.values(option::kSet)) {
     const qsizetype equals = assignment.indexOf(QLatin1Char('='));
     if (equals <= 0) {
       printError(QStringLiteral("--set %1: expected name=value").arg(assignment));
@@ -328,8 +324,8 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
     }
     request.material.setParameter(*id, value.value());
   }
-  if (parser.isSet(QStringLiteral("technique"))) {
-    const QString name = parser.value(QStringLiteral("technique"));
+  if (parser.isSet(option::kTechnique)) {
+    const QString name = parser.value(option::kTechnique);
     const std::optional<core::Technique> technique = core::findTechnique(name.toStdString());
     if (!technique) {
       printError(QStringLiteral("--technique %1: expected one of %2")
@@ -338,17 +334,16 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
     }
     request.material.setTechnique(*technique);
   }
-  if (parser.isSet(QStringLiteral("shading"))) {
-    core::Result<double> shading =
-        core::parseOptionValue(core::parameterSpec(core::ParamId::Shading),
-                               parser.value(QStringLiteral("shading")).toStdString());
+  if (parser.isSet(option::kShading)) {
+    core::Result<double> shading = core::parseOptionValue(
+        core::parameterSpec(core::ParamId::Shading), parser.value(option::kShading).toStdString());
     if (!shading) {
       printError(QStringLiteral("--shading: ") + QString::fromStdString(shading.error()));
       return kExitUsage;
     }
     request.material.setParameter(core::ParamId::Shading, shading.value());
   }
-  const QString viewName = parser.value(QStringLiteral("view"));
+  const QString viewName = parser.value(option::kView);
   const std::optional<core::DebugView> view = core::findDebugView(viewName.toStdString());
   if (!view) {
     printError(QStringLiteral("--view %1: expected one of %2")
@@ -361,19 +356,18 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
 
 // --mesh, --size and the camera and light options (over the preset's view).
 std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& request) {
-  const bool meshFromPreset =
-      !parser.isSet(QStringLiteral("mesh")) && !request.presetView.mesh.empty();
+  const bool meshFromPreset = !parser.isSet(option::kMesh) && !request.presetView.mesh.empty();
   const QString meshName = meshFromPreset ? QString::fromStdString(request.presetView.mesh)
-                                          : parser.value(QStringLiteral("mesh"));
+                                          : parser.value(option::kMesh);
   const QString meshNamedBy =
       meshFromPreset ? request.presetPath + QStringLiteral(": view.mesh") : QString();
   if (auto exit = resolveMesh(meshName, request.mesh, meshNamedBy))
     return *exit;
   static const QRegularExpression sizePattern(QStringLiteral("^(\\d{1,5})x(\\d{1,5})$"));
-  const QRegularExpressionMatch size = sizePattern.match(parser.value(QStringLiteral("size")));
+  const QRegularExpressionMatch size = sizePattern.match(parser.value(option::kSize));
   if (!size.hasMatch() || size.captured(1).toInt() < 1 || size.captured(2).toInt() < 1) {
     printError(QStringLiteral("--size %1: expected WIDTHxHEIGHT, e.g. 1280x720")
-                   .arg(parser.value(QStringLiteral("size"))));
+                   .arg(parser.value(option::kSize)));
     return kExitUsage;
   }
   request.width = size.captured(1).toInt();
@@ -385,15 +379,15 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
   if (auto exit =
           applyLightingOptions(parser, request.presetView, request.presetPath, request.frame.view))
     return exit;
-  const auto yaw = numberOption(parser, QStringLiteral("yaw"), camera.yawDeg);
-  const auto pitch = numberOption(parser, QStringLiteral("pitch"), camera.pitchDeg);
-  const auto distance = numberOption(parser, QStringLiteral("distance"), 0.0);
-  const auto lightYaw = numberOption(parser, QStringLiteral("light-yaw"), light.azimuthDeg);
-  const auto lightPitch = numberOption(parser, QStringLiteral("light-pitch"), light.elevationDeg);
+  const auto yaw = numberOption(parser, option::kYaw, camera.yawDeg);
+  const auto pitch = numberOption(parser, option::kPitch, camera.pitchDeg);
+  const auto distance = numberOption(parser, option::kDistance, 0.0);
+  const auto lightYaw = numberOption(parser, option::kLightYaw, light.azimuthDeg);
+  const auto lightPitch = numberOption(parser, option::kLightPitch, light.elevationDeg);
   if (!yaw || !pitch || !distance || !lightYaw || !lightPitch)
     return kExitUsage;
   if (*pitch < core::OrbitCamera::kMinPitchDeg || *pitch > core::OrbitCamera::kMaxPitchDeg ||
-      (parser.isSet(QStringLiteral("distance")) && *distance <= 0.0) || *lightPitch < -90.0 ||
+      (parser.isSet(option::kDistance) && *distance <= 0.0) || *lightPitch < -90.0 ||
       *lightPitch > 90.0) {
     printError(
         QStringLiteral("--pitch must be within -89..89 degrees, --light-pitch within "
@@ -404,8 +398,8 @@ std::optional<int> resolveView(const QCommandLineParser& parser, RenderRequest& 
   camera.pitchDeg = float(*pitch);
   // Framed from these angles as the viewport frames a mesh (key F), unless --distance is given
   // or the preset holds the camera exactly as it was saved.
-  const bool savedView = request.presetView.camera && !parser.isSet(QStringLiteral("yaw")) &&
-                         !parser.isSet(QStringLiteral("pitch"));
+  const bool savedView =
+      request.presetView.camera && !parser.isSet(option::kYaw) && !parser.isSet(option::kPitch);
   if (!savedView)
     camera.frame(request.mesh.bounds(), float(request.width) / float(request.height));
   if (*distance > 0.0)
@@ -448,13 +442,13 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     printError(QStringLiteral("render takes at most one preset (see --help)"));
     return kExitUsage;
   }
-  if (!parser.isSet(QStringLiteral("out"))) {
+  if (!parser.isSet(option::kOut)) {
     printError(QStringLiteral("render needs --out FILE (see --help)"));
     return kExitUsage;
   }
   if (auto exit = parseOutput(parser, request))
     return exit;
-  bool anyMap = parser.isSet(QStringLiteral("orm"));
+  bool anyMap = parser.isSet(option::kOrm);
   for (core::MapSlot slot : core::kAllMapSlots)
     anyMap = anyMap || parser.isSet(mapOptionName(slot));
   if (positional.isEmpty() && !anyMap) {

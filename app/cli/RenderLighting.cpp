@@ -1,6 +1,8 @@
 // RenderLighting; see RenderLighting.h.
 #include "RenderLighting.h"
 
+#include "app/cli/CliOptionNames.h"
+
 #include "core/shading/EnvironmentMaps.h"
 
 namespace relief::cli {
@@ -10,7 +12,7 @@ namespace {
 constexpr double kMaxLightIntensity = 100.0;
 
 std::optional<int> applyDisplay(const QCommandLineParser& parser, core::DisplayTransform& display) {
-  const auto exposure = numberOption(parser, QStringLiteral("exposure"), display.exposureEv);
+  const auto exposure = numberOption(parser, option::kExposure, display.exposureEv);
   if (!exposure)
     return kExitUsage;
   if (*exposure < core::DisplayTransform::kMinExposureEv ||
@@ -21,8 +23,8 @@ std::optional<int> applyDisplay(const QCommandLineParser& parser, core::DisplayT
     return kExitUsage;
   }
   display.exposureEv = float(*exposure);
-  if (parser.isSet(QStringLiteral("tonemap"))) {
-    const QString name = parser.value(QStringLiteral("tonemap"));
+  if (parser.isSet(option::kTonemap)) {
+    const QString name = parser.value(option::kTonemap);
     const std::optional<core::ToneMapper> mapper = core::findToneMapper(name.toStdString());
     if (!mapper) {
       printError(QStringLiteral("--tonemap %1: expected one of %2")
@@ -37,14 +39,12 @@ std::optional<int> applyDisplay(const QCommandLineParser& parser, core::DisplayT
 std::optional<int> applyEnvironment(const QCommandLineParser& parser, const QString& presetPath,
                                     core::Environment& environment) {
   QString namedBy;  // where the source came from, when not from --environment
-  if (parser.isSet(QStringLiteral("environment")))
-    environment.source = parser.value(QStringLiteral("environment")).toStdString();
+  if (parser.isSet(option::kEnvironment))
+    environment.source = parser.value(option::kEnvironment).toStdString();
   else if (!presetPath.isEmpty())
     namedBy = presetPath + QStringLiteral(": view.environment.source");
-  const auto intensity =
-      numberOption(parser, QStringLiteral("environment-intensity"), environment.intensity);
-  const auto rotation =
-      numberOption(parser, QStringLiteral("environment-rotation"), environment.rotationDeg);
+  const auto intensity = numberOption(parser, option::kEnvironmentIntensity, environment.intensity);
+  const auto rotation = numberOption(parser, option::kEnvironmentRotation, environment.rotationDeg);
   if (!intensity || !rotation)
     return kExitUsage;
   if (*intensity < 0.0 || *intensity > core::Environment::kMaxIntensity) {
@@ -54,8 +54,8 @@ std::optional<int> applyEnvironment(const QCommandLineParser& parser, const QStr
   }
   environment.intensity = float(*intensity);
   environment.rotationDeg = float(std::remainder(*rotation, 360.0));
-  if (parser.isSet(QStringLiteral("background"))) {
-    const QString name = parser.value(QStringLiteral("background"));
+  if (parser.isSet(option::kBackground)) {
+    const QString name = parser.value(option::kBackground);
     const std::optional<core::Background> background = core::findBackground(name.toStdString());
     if (!background) {
       printError(QStringLiteral("--background %1: expected one of %2")
@@ -76,36 +76,36 @@ std::optional<int> applyEnvironment(const QCommandLineParser& parser, const QStr
 
 CliOptions lightingOptions() {
   return {
-      {QStringLiteral("light-intensity"),
+      {option::kLightIntensity,
        QStringLiteral("X"),
        QStringLiteral("Multiplier on the directional light's colour (0..100)."),
        {}},
-      {QStringLiteral("environment"),
+      {option::kEnvironment,
        QStringLiteral("name|file"),
        enumNames(core::allBuiltInEnvironments(), core::builtInEnvironmentName) +
            QStringLiteral(" (built in), or an equirectangular EXR or Radiance HDR file: the "
                           "image-based light of pbr shading and what --background shows. "
                           "Default studio."),
        {}},
-      {QStringLiteral("environment-intensity"),
+      {option::kEnvironmentIntensity,
        QStringLiteral("X"),
        QStringLiteral("Multiplier on the environment's radiance (0..16, default 1)."),
        {}},
-      {QStringLiteral("environment-rotation"),
+      {option::kEnvironmentRotation,
        QStringLiteral("deg"),
        QStringLiteral("Turns the environment about the vertical axis (degrees)."),
        {}},
-      {QStringLiteral("background"),
+      {option::kBackground,
        QStringLiteral("name"),
        enumNames(core::allBackgrounds(), core::backgroundName) +
            QStringLiteral(": a plain dark gradient, the environment, or the environment "
                           "blurred. Default color."),
        {}},
-      {QStringLiteral("exposure"),
+      {option::kExposure,
        QStringLiteral("EV"),
        QStringLiteral("Exposure of the shading view in stops (-10..10); +1 doubles it."),
        {}},
-      {QStringLiteral("tonemap"),
+      {option::kTonemap,
        QStringLiteral("name"),
        enumNames(core::allToneMappers(), core::toneMapperName) +
            QStringLiteral(": none clips at 1, neutral is Khronos PBR Neutral, aces is ACES "
@@ -124,8 +124,7 @@ std::optional<int> applyLightingOptions(const QCommandLineParser& parser,
     view.display = *presetView.display;
   if (presetView.environment)
     view.environment = *presetView.environment;
-  const auto intensity =
-      numberOption(parser, QStringLiteral("light-intensity"), view.light.intensity);
+  const auto intensity = numberOption(parser, option::kLightIntensity, view.light.intensity);
   if (!intensity)
     return kExitUsage;
   if (*intensity < 0.0 || *intensity > kMaxLightIntensity) {
