@@ -4,7 +4,7 @@
 #include "SampleLocator.h"
 #include "renderer/OpenGLProbe.h"
 #include "ui/document/DocumentFiles.h"
-#include "ui/window/AppSettings.h"
+#include "ui/settings/AppSettings.h"
 #include "ui/window/DarkTheme.h"
 #include "ui/window/MainWindow.h"
 

@@ -1,7 +1,7 @@
 // CompareAllDialog; see CompareAllDialog.h.
 #include "ui/compare/CompareAllDialog.h"
 
-#include "ui/window/QtText.h"
+#include "ui/QtText.h"
 
 #include <QChart>
 #include <QChartView>

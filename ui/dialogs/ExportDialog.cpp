@@ -1,9 +1,9 @@
 // ExportDialog; see ExportDialog.h.
 #include "ui/dialogs/ExportDialog.h"
 
+#include "ui/QtText.h"
+#include "ui/settings/AppSettings.h"
 #include "ui/tasks/BackgroundTask.h"
-#include "ui/window/AppSettings.h"
-#include "ui/window/QtText.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -2,8 +2,8 @@
 #include "ui/dialogs/PreferencesDialog.h"
 
 #include "core/mesh/MeshPrimitives.h"
-#include "ui/window/AppSettings.h"
-#include "ui/window/QtText.h"
+#include "ui/QtText.h"
+#include "ui/settings/AppSettings.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -4,7 +4,7 @@
 #include "ui/document/MaterialDocument.h"
 #include "ui/document/RecoveryStore.h"
 #include "ui/document/ViewDocument.h"
-#include "ui/window/AppSettings.h"
+#include "ui/settings/AppSettings.h"
 
 #include <QApplication>
 #include <QDir>

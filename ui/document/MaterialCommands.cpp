@@ -1,8 +1,8 @@
 // Undo commands; see MaterialCommands.h.
 #include "ui/document/MaterialCommands.h"
 
+#include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
-#include "ui/window/QtText.h"
 
 #include <QFileInfo>
 

@@ -3,7 +3,7 @@
 
 #include "core/mesh/MeshImport.h"
 #include "core/mesh/MeshPrimitives.h"
-#include "ui/window/QtText.h"
+#include "ui/QtText.h"
 
 #include <QFileInfo>
 #include <QUndoCommand>

@@ -2,11 +2,11 @@
 #include "ui/panels/CompressPanel.h"
 
 #include "core/compression/TextureFile.h"
+#include "ui/QtText.h"
 #include "ui/compare/CompareAllDialog.h"
 #include "ui/compare/CompareDialog.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/document/ViewDocument.h"
-#include "ui/window/QtText.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -2,10 +2,10 @@
 #include "ui/panels/EnvironmentPanel.h"
 
 #include "core/shading/EnvironmentMaps.h"
+#include "ui/QtText.h"
 #include "ui/document/ViewDocument.h"
 #include "ui/panels/ParameterSlider.h"
 #include "ui/tasks/BackgroundTask.h"
-#include "ui/window/QtText.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

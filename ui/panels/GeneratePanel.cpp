@@ -3,11 +3,11 @@
 
 #include "core/image/ImageIO.h"
 #include "renderer/ImageConversion.h"
+#include "ui/QtText.h"
 #include "ui/compare/ImagePairView.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/panels/OptionEditor.h"
 #include "ui/tasks/GeneratorRunner.h"
-#include "ui/window/QtText.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -2,10 +2,10 @@
 #include "ui/panels/LightPanel.h"
 
 #include "core/image/ColorSpace.h"
+#include "ui/QtText.h"
 #include "ui/document/ViewDocument.h"
 #include "ui/panels/EnvironmentPanel.h"
 #include "ui/panels/ParameterSlider.h"
-#include "ui/window/QtText.h"
 
 #include <QCheckBox>
 #include <QColorDialog>

@@ -2,8 +2,8 @@
 #include "ui/panels/MapsPanel.h"
 
 #include "renderer/ImageConversion.h"
+#include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
-#include "ui/window/QtText.h"
 
 #include <QFileInfo>
 #include <QGridLayout>

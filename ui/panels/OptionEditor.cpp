@@ -1,8 +1,8 @@
 // OptionEditor; see OptionEditor.h.
 #include "ui/panels/OptionEditor.h"
 
+#include "ui/QtText.h"
 #include "ui/panels/ParameterSlider.h"
-#include "ui/window/QtText.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,10 +1,10 @@
 // ParameterPanel; see ParameterPanel.h.
 #include "ui/panels/ParameterPanel.h"
 
+#include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/panels/OptionEditor.h"
 #include "ui/panels/ParameterSlider.h"
-#include "ui/window/QtText.h"
 
 #include <QCheckBox>
 #include <QComboBox>

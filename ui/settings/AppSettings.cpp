@@ -1,5 +1,5 @@
 // AppSettings; see AppSettings.h.
-#include "ui/window/AppSettings.h"
+#include "ui/settings/AppSettings.h"
 
 #include "core/mesh/MeshPrimitives.h"
 #include "core/shading/EnvironmentMaps.h"

@@ -1,7 +1,7 @@
 // CompressionRunner; see CompressionRunner.h.
 #include "ui/tasks/CompressionRunner.h"
 
-#include "ui/window/QtText.h"
+#include "ui/QtText.h"
 
 #include <QMetaObject>
 

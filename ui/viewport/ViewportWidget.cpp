@@ -5,6 +5,7 @@
 #include "renderer/ImageConversion.h"
 #include "renderer/MaterialRenderer.h"
 #include "renderer/SampleCount.h"
+#include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/document/ViewDocument.h"
 #include "ui/viewport/ConeMapBuilder.h"
@@ -12,7 +13,6 @@
 #include "ui/viewport/InteractionMonitor.h"
 #include "ui/viewport/ViewNavigation.h"
 #include "ui/viewport/ViewportOverlay.h"
-#include "ui/window/QtText.h"
 
 #include <QElapsedTimer>
 #include <QMouseEvent>

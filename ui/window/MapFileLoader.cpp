@@ -6,9 +6,9 @@
 #include "core/image/ImageFileTypes.h"
 #include "core/material/MapContent.h"
 #include "core/preset/OrmTexture.h"
+#include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
-#include "ui/window/AppSettings.h"
-#include "ui/window/QtText.h"
+#include "ui/settings/AppSettings.h"
 
 #include <QApplication>
 #include <QFileDialog>

@@ -3,9 +3,9 @@
 
 #include "core/mesh/MeshPrimitives.h"
 #include "core/view/DebugView.h"
+#include "ui/QtText.h"
 #include "ui/document/ViewDocument.h"
 #include "ui/viewport/ViewportWidget.h"
-#include "ui/window/QtText.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -4,8 +4,8 @@
 #include "core/image/ImageIO.h"
 #include "renderer/OffscreenRenderer.h"
 #include "ui/document/ViewDocument.h"
+#include "ui/settings/AppSettings.h"
 #include "ui/viewport/ViewportWidget.h"
-#include "ui/window/AppSettings.h"
 
 #include <QApplication>
 #include <QDialog>
