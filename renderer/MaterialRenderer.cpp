@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace relief::renderer {
@@ -256,9 +257,11 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   program.setUniformValue("uSplitSumLut", kSplitSumUnit);
   if (isPbr(material))
     bindEnvironment(program, frame.view.environment);
-  program.setUniformValue("uHasOcclusionMap", material.hasMap(MapSlot::AmbientOcclusion));
-  program.setUniformValue("uHasRoughnessMap", material.hasMap(MapSlot::Roughness));
-  program.setUniformValue("uHasMetallicMap", material.hasMap(MapSlot::Metallic));
+  for (MapSlot slot : core::kAllMapSlots) {
+    // The shader declares the flags it reads (a slot it always samples has none: ignored).
+    const std::string presence = "uHas" + std::string(core::mapSlotSampler(slot).substr(1));
+    program.setUniformValue(presence.c_str(), material.hasMap(slot));
+  }
   // A natively uploaded two-channel normal (BC5, EAC RG11, DXT5nm swizzled) has no Z texel.
   const auto& normal = material.map(MapSlot::Normal).compressed;
   program.setUniformValue(
@@ -419,12 +422,10 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
                                                          : QVector2D(1.0f, 1.0f));
   program.setUniformValue("uHeightQuantum", heightQuantum(heightSource));
 
-  program.setUniformValue("uColorMap", kFirstMapUnit + int(MapSlot::Color));
-  program.setUniformValue("uNormalMap", kFirstMapUnit + int(MapSlot::Normal));
-  program.setUniformValue("uHeightMap", kFirstMapUnit + int(MapSlot::Height));
-  program.setUniformValue("uOcclusionMap", kFirstMapUnit + int(MapSlot::AmbientOcclusion));
-  program.setUniformValue("uRoughnessMap", kFirstMapUnit + int(MapSlot::Roughness));
-  program.setUniformValue("uMetallicMap", kFirstMapUnit + int(MapSlot::Metallic));
+  for (MapSlot slot : core::kAllMapSlots) {
+    const std::string sampler(core::mapSlotSampler(slot));
+    program.setUniformValue(sampler.c_str(), kFirstMapUnit + int(slot));
+  }
 }
 
 // The step between a height map's stored levels, in normalised height: self-shadow rays start

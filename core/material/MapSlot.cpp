@@ -13,6 +13,7 @@ struct SlotInfo {
   std::string_view name;
   std::string_view label;
   MapTexels texels;
+  std::string_view sampler;  // the shaders' sampler2D (shaders/include/material_inputs.glsl)
   // What an empty scalar slot means: the top surface, no occlusion, no roughness (the parameter
   // alone applies), a metallic texel of 1 (pbr multiplies the metallic factor by it).
   float neutral;
@@ -27,36 +28,42 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
     {"color",
      "Colour",
      MapTexels::Colour,
+     "uColorMap",
      0.0f,
      {"color", "colour", "albedo", "diffuse", "basecolor", "diff"},
      {"d", "cc", "col", "c"}},
     {"normal",
      "Normal",
      MapTexels::Normal,
+     "uNormalMap",
      0.0f,
      {"normal", "nrm", "norm", "nor", "normalgl", "normaldx"},
      {"n", "nm", "nml", ""}},
     {"height",
      "Height",
      MapTexels::Scalar,
+     "uHeightMap",
      1.0f,
      {"height", "disp", "displacement", "bump", "depth", "parallax"},
      {"z", "h", "hm", "heightmap"}},
     {"ao",
      "Ambient occlusion",
      MapTexels::Scalar,
+     "uOcclusionMap",
      1.0f,
      {"ao", "occlusion", "ambientocclusion", "", "", ""},
      {"occ", "", "", ""}},
     {"roughness",
      "Roughness",
      MapTexels::Scalar,
+     "uRoughnessMap",
      0.0f,
      {"roughness", "rough", "rgh", "", "", ""},
      {"", "", "", ""}},
     {"metallic",
      "Metallic",
      MapTexels::Scalar,
+     "uMetallicMap",
      1.0f,
      {"metallic", "metalness", "metal", "mtl", "", ""},
      {"", "", "", ""}},
@@ -100,6 +107,10 @@ std::optional<MapSlot> findMapSlot(std::string_view name) {
 
 MapTexels mapSlotTexels(MapSlot slot) {
   return kSlots[std::size_t(slot)].texels;
+}
+
+std::string_view mapSlotSampler(MapSlot slot) {
+  return kSlots[std::size_t(slot)].sampler;
 }
 
 float mapSlotNeutralValue(MapSlot slot) {

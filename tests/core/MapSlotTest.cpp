@@ -1,6 +1,11 @@
 // Assigning dropped files to map slots by the hints in their names.
 #include "core/material/MapSlot.h"
 
+#include "support/TestPaths.h"
+
+#include <fstream>
+#include <sstream>
+
 #include <gtest/gtest.h>
 
 namespace relief::core {
@@ -89,6 +94,20 @@ TEST(MapSlot, TheTableSaysWhatEachSlotHoldsAndWhatEmptyMeans) {
   EXPECT_EQ(mapSlotNeutralValue(MapSlot::AmbientOcclusion), 1.0f);
   EXPECT_EQ(mapSlotNeutralValue(MapSlot::Roughness), 0.0f);
   EXPECT_EQ(mapSlotNeutralValue(MapSlot::Metallic), 1.0f);
+}
+
+// The renderer binds each slot's texture to the sampler its row names; a name the shader does
+// not declare would leave the map unsampled without an error from GL.
+TEST(MapSlot, EverySlotsSamplerIsDeclaredInTheShader) {
+  std::ifstream file(test::sourcePath("shaders/include/material_inputs.glsl"));
+  ASSERT_TRUE(file) << "material_inputs.glsl not found";
+  std::stringstream source;
+  source << file.rdbuf();
+  for (MapSlot slot : kAllMapSlots) {
+    const std::string declaration = "uniform sampler2D " + std::string(mapSlotSampler(slot)) + ";";
+    EXPECT_NE(source.str().find(declaration), std::string::npos)
+        << mapSlotName(slot) << ": no '" << declaration << "'";
+  }
 }
 
 }  // namespace
