@@ -38,7 +38,6 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   core::Status initialize();
   // Frees every GL object; call with the context current (before it is destroyed).
   void releaseResources();
-  bool isInitialized() const { return m_initialized; }
 
   void setMesh(const core::Mesh& mesh);
   void setMaterial(const core::Material& material);

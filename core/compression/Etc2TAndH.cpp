@@ -244,6 +244,40 @@ std::vector<int> principalSplits(const Texels& texels, int validMask, int wanted
 // How many of the eight distances, best first, are refitted at quality normal.
 constexpr int kRefittedDistances = 2;
 
+// The candidates a split of the block into two groups seeds: each group's mean colour at 4 bits,
+// as H with the two groups and as T with either group as the lone colour.
+std::array<Candidate, 3> seedsForSplit(const Texels& texels, int split) {
+  float mean[2][3] = {}, count[2] = {};
+  for (int t = 0; t < 16; ++t) {
+    const int group = (split >> t) & 1;
+    count[group] += texels.weight[t];
+    for (int ch = 0; ch < 3; ++ch)
+      mean[group][ch] += texels.weight[t] * texels.value[ch][t];
+  }
+  std::array<int, 3> quantised[2];
+  for (int g = 0; g < 2; ++g) {
+    for (int ch = 0; ch < 3; ++ch)
+      quantised[g][ch] = quantise4(mean[g][ch] / std::max(count[g], 1.0f));
+  }
+  return {Candidate{true, quantised[0], quantised[1], 0},
+          Candidate{false, quantised[0], quantised[1], 0},
+          Candidate{false, quantised[1], quantised[0], 0}};
+}
+
+// The packed block's squared error judged by the decoder itself, in 0..255 units.
+float decodedError(const std::uint8_t block[8], const float rgb[16][3], const Texels& texels) {
+  float decoded[16][3];
+  decodeEtc2Rgb(block, decoded);
+  float error = 0.0f;
+  for (int t = 0; t < 16; ++t) {
+    for (int ch = 0; ch < 3; ++ch) {
+      const float e = decoded[t][ch] * 255.0f - rgb[t][ch];
+      error += texels.weight[t] * e * e;
+    }
+  }
+  return error;
+}
+
 }  // namespace
 
 float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality quality,
@@ -275,22 +309,7 @@ float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality q
     return error;
   };
   for (int split : splits) {
-    float mean[2][3] = {}, count[2] = {};
-    for (int t = 0; t < 16; ++t) {
-      const int group = (split >> t) & 1;
-      count[group] += texels.weight[t];
-      for (int ch = 0; ch < 3; ++ch)
-        mean[group][ch] += texels.weight[t] * texels.value[ch][t];
-    }
-    std::array<int, 3> quantised[2];
-    for (int g = 0; g < 2; ++g) {
-      for (int ch = 0; ch < 3; ++ch)
-        quantised[g][ch] = quantise4(mean[g][ch] / std::max(count[g], 1.0f));
-    }
-    // H with the two groups; T with either group as the lone colour.
-    const Candidate seeds[3] = {{true, quantised[0], quantised[1], 0},
-                                {false, quantised[0], quantised[1], 0},
-                                {false, quantised[1], quantised[0], 0}};
+    const std::array<Candidate, 3> seeds = seedsForSplit(texels, split);
     for (Candidate seed : seeds) {
       // Every distance from the seed, then the most promising refitted.
       std::array<std::pair<float, int>, 8> byError;
@@ -336,17 +355,7 @@ float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality q
   }
   assignmentError(texels, winner, index);
   pack(winner, index, out);
-  // The packed block judged by the decoder itself.
-  float decoded[16][3];
-  decodeEtc2Rgb(out, decoded);
-  float error = 0.0f;
-  for (int t = 0; t < 16; ++t) {
-    for (int ch = 0; ch < 3; ++ch) {
-      const float e = decoded[t][ch] * 255.0f - rgb[t][ch];
-      error += texels.weight[t] * e * e;
-    }
-  }
-  return error;
+  return decodedError(out, rgb, texels);
 }
 
 }  // namespace relief::core::inline compression

@@ -25,6 +25,55 @@ QString qs(const std::string& text) {
   return QString::fromStdString(text);
 }
 
+// The manifest's "parallax": Epic's POM function and its inputs converted from Relief's, and
+// what the conversion cannot keep.
+QJsonObject unrealParallax(const Material& material, std::vector<std::string>& notes) {
+  const double scale = material.parameter(ParamId::HeightScale);
+  const double bias = material.parameter(ParamId::HeightBias);
+  const bool deep = isOccludingRelief(material.technique());
+  // Epic's function marches view.xy / view.z scaled by Height Ratio (the depth as a fraction of
+  // the texture's width) in the UVs it is given: Relief's heightScale in tiled texture widths.
+  QJsonObject parallax{
+      {QStringLiteral("function"), QString::fromLatin1(kPomFunction)},
+      {QStringLiteral("HeightRatio"), scale},
+      {QStringLiteral("MinSteps"), deep ? material.parameter(ParamId::MinSamples) : 1.0},
+      {QStringLiteral("MaxSteps"), deep ? material.parameter(ParamId::MaxSamples) : 1.0},
+      {QStringLiteral("ReferencePlane"), unrealReferencePlane(scale, bias)},
+      {QStringLiteral("HeightmapChannel"), QJsonArray{1, 0, 0, 0}},
+      {QStringLiteral("PixelDepthOffset"), material.parameterFlag(ParamId::DepthOffset)},
+      {QStringLiteral("inputs"),
+       QJsonObject{{QStringLiteral("HeightRatio"), QStringLiteral("Height Ratio")},
+                   {QStringLiteral("MinSteps"), QStringLiteral("Min Steps")},
+                   {QStringLiteral("MaxSteps"), QStringLiteral("Max Steps")},
+                   {QStringLiteral("ReferencePlane"), QStringLiteral("Reference Plane")}}},
+      {QStringLiteral("outputs"), QStringLiteral("Parallax UVs drive every texture's UVs; "
+                                                 "Pixel Depth Offset when PixelDepthOffset")},
+  };
+  if (!deep) {
+    notes.push_back(
+        "Unreal's parallax is the POM function; Relief's single-step parallax is exported as "
+        "one step of it");
+  }
+  const double plane = -bias / std::max(scale, 1e-12);
+  if (plane < 0.0 || plane > 1.0) {
+    notes.push_back("heightBias " + engineNumber(bias) +
+                    " puts the surface outside the relief; Reference Plane clamped to " +
+                    engineNumber(unrealReferencePlane(scale, bias)));
+  }
+  return parallax;
+}
+
+// The import script is compiled in (core/exporters/scripts); the manifest's name goes first.
+Status writeImportScript(const std::filesystem::path& directory, const std::string& stem,
+                         const std::string& manifestFile) {
+  QFile script(QStringLiteral(":/exporters/unreal_import.py"));
+  if (!script.open(QIODevice::ReadOnly))
+    return makeError("the Unreal import script is missing from this build");
+  const std::string text =
+      "MANIFEST = \"" + manifestFile + "\"  # written by Relief\n" + script.readAll().toStdString();
+  return writeFileAtomically((directory / (stem + "_unreal_import.py")).string(), text);
+}
+
 }  // namespace
 
 double unrealReferencePlane(double heightScale, double heightBias) {
@@ -96,39 +145,7 @@ Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string&
                                          material.parameterFlag(ParamId::HeightIsDepth));
     if (Status s = write("Height", height, SampleFormat::UInt16, false, "TC_GRAYSCALE"); !s)
       return makeError(s.error());
-    const double scale = material.parameter(ParamId::HeightScale);
-    const double bias = material.parameter(ParamId::HeightBias);
-    const bool deep = isOccludingRelief(material.technique());
-    // Epic's function marches view.xy / view.z scaled by Height Ratio (the depth as a fraction of
-    // the texture's width) in the UVs it is given: Relief's heightScale in tiled texture widths.
-    QJsonObject parallax{
-        {QStringLiteral("function"), QString::fromLatin1(kPomFunction)},
-        {QStringLiteral("HeightRatio"), scale},
-        {QStringLiteral("MinSteps"), deep ? material.parameter(ParamId::MinSamples) : 1.0},
-        {QStringLiteral("MaxSteps"), deep ? material.parameter(ParamId::MaxSamples) : 1.0},
-        {QStringLiteral("ReferencePlane"), unrealReferencePlane(scale, bias)},
-        {QStringLiteral("HeightmapChannel"), QJsonArray{1, 0, 0, 0}},
-        {QStringLiteral("PixelDepthOffset"), material.parameterFlag(ParamId::DepthOffset)},
-        {QStringLiteral("inputs"),
-         QJsonObject{{QStringLiteral("HeightRatio"), QStringLiteral("Height Ratio")},
-                     {QStringLiteral("MinSteps"), QStringLiteral("Min Steps")},
-                     {QStringLiteral("MaxSteps"), QStringLiteral("Max Steps")},
-                     {QStringLiteral("ReferencePlane"), QStringLiteral("Reference Plane")}}},
-        {QStringLiteral("outputs"), QStringLiteral("Parallax UVs drive every texture's UVs; "
-                                                   "Pixel Depth Offset when PixelDepthOffset")},
-    };
-    root.insert(QStringLiteral("parallax"), parallax);
-    if (!deep) {
-      result.notes.push_back(
-          "Unreal's parallax is the POM function; Relief's single-step parallax is exported as "
-          "one step of it");
-    }
-    const double plane = -bias / std::max(scale, 1e-12);
-    if (plane < 0.0 || plane > 1.0) {
-      result.notes.push_back("heightBias " + engineNumber(bias) +
-                             " puts the surface outside the relief; Reference Plane clamped to " +
-                             engineNumber(unrealReferencePlane(scale, bias)));
-    }
+    root.insert(QStringLiteral("parallax"), unrealParallax(material, result.notes));
   }
   if (material.parameter(ParamId::NormalStrength) != 1.0 && material.hasMap(MapSlot::Normal)) {
     result.notes.push_back("normalStrength " +
@@ -147,13 +164,7 @@ Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string&
       !s)
     return makeError(s.error());
 
-  // The import script is compiled in (core/exporters/scripts); the manifest's name goes first.
-  QFile script(QStringLiteral(":/exporters/unreal_import.py"));
-  if (!script.open(QIODevice::ReadOnly))
-    return makeError("the Unreal import script is missing from this build");
-  const std::string text =
-      "MANIFEST = \"" + manifestFile + "\"  # written by Relief\n" + script.readAll().toStdString();
-  if (Status s = writeFileAtomically((directory / (stem + "_unreal_import.py")).string(), text); !s)
+  if (Status s = writeImportScript(directory, stem, manifestFile); !s)
     return makeError(s.error());
   return result;
 }

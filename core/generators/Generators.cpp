@@ -29,112 +29,136 @@ OptionSpec conventionOption(std::string_view description) {
 constexpr std::array<std::string_view, 4> kPackLayoutChoices = {"normal-height", "orm",
                                                                 "unity-mask", "unity-metallic"};
 
+GeneratorInfo normalGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::Normal,
+      "normal",
+      "Normal from height",
+      "Tangent-space normals from the height map's slopes (reference 003, 1.4).",
+      {{"in", "Height map", MapSlot::Height}},
+      MapSlot::Normal,
+      {choiceOption("kernel", "Kernel", {"central", "sobel", "scharr", "sobel5"}, 1,
+                    "How slopes are measured: central differences (sharpest, noisiest), Sobel "
+                    "3x3, Scharr 3x3 (more even in all directions), Sobel 5x5 (smoothest)."),
+       numberOption("strength", "Strength", "slope per unit of height per texel", 0.01, 200.0, 4.0,
+                    2,
+                    "How steep the relief is: a height step of 1.0 over one texel becomes this "
+                    "slope. heightScale x map width reproduces a material's depth exactly."),
+       conventionOption("opengl: green is +Y up the image (Blender, Unity, Godot, glTF); "
+                        "directx: green is +Y down (Unreal)."),
+       edgeOption(0),
+       numberOption("detailFine", "Fine detail", "weight", 0.0, 1.0, 1.0, 2,
+                    "Weight of the slopes of the height as it is."),
+       numberOption("detailMedium", "Medium detail", "weight", 0.0, 1.0, 0.0, 2,
+                    "Weight of the slopes of the height blurred by 2 texels."),
+       numberOption("detailLarge", "Large detail", "weight", 0.0, 1.0, 0.0, 2,
+                    "Weight of the slopes of the height blurred by 4 texels."),
+       numberOption("detailHuge", "Huge detail", "weight", 0.0, 1.0, 0.0, 2,
+                    "Weight of the slopes of the height blurred by 8 texels.")}};
+}
+
+GeneratorInfo heightGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::Height,
+      "height",
+      "Height from normal",
+      "Integrates a normal map into a height map (Frankot-Chellappa, by FFT); the result is "
+      "normalised to 0..1 and the relief's depth is reported.",
+      {{"in", "Normal map", MapSlot::Normal}},
+      MapSlot::Height,
+      {conventionOption("The input's convention: opengl (+Y up) or directx (+Y down)."),
+       edgeOption(1)}};
+}
+
+GeneratorInfo heightFromColorGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::HeightFromColor,
+      "height-from-color",
+      "Height from colour",
+      "A height guess from a photograph's brightness, with the large-scale shading removed.",
+      {{"in", "Colour map", MapSlot::Color}},
+      MapSlot::Height,
+      {numberOption("radius", "High-pass radius", "texels", 0.0, 512.0, 64.0, 1,
+                    "Brightness changes larger than this are treated as lighting, not height, "
+                    "and removed. 0 keeps them."),
+       numberOption("contrast", "Contrast", "factor around mid-grey", 0.0, 8.0, 1.0, 2,
+                    "Steepens or flattens the height around its middle."),
+       numberOption("levelsLow", "Levels: black", "input level", 0.0, 1.0, 0.0, 3,
+                    "Input level that becomes the lowest height."),
+       numberOption("levelsHigh", "Levels: white", "input level", 0.0, 1.0, 1.0, 3,
+                    "Input level that becomes the highest height."),
+       flagOption("invert", "Invert", false, "Dark is high (e.g. bright grout in a photo)."),
+       edgeOption(0)}};
+}
+
+GeneratorInfo ambientOcclusionGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::AmbientOcclusion,
+      "ao",
+      "Ambient occlusion from height",
+      "Horizon-based occlusion: how much of the sky each texel sees over the relief around it.",
+      {{"in", "Height map", MapSlot::Height}},
+      MapSlot::AmbientOcclusion,
+      {integerOption("directions", "Directions", "directions", 4, 64, 16,
+                     "Directions searched for the horizon around each texel."),
+       integerOption("steps", "Steps", "samples per direction", 2, 64, 16,
+                     "Samples along each direction out to the radius."),
+       numberOption("radius", "Radius", "texels", 1.0, 256.0, 32.0, 1,
+                    "How far away relief can occlude."),
+       numberOption("depth", "Depth", "texels per unit of height", 0.0, 512.0, 16.0, 1,
+                    "How deep the relief is: a height difference of 1.0 counts as this many "
+                    "texel widths (heightScale x map width for a material)."),
+       numberOption("strength", "Strength", "factor", 0.0, 4.0, 1.0, 2,
+                    "1 is the physical occlusion; more darkens further."),
+       edgeOption(0)}};
+}
+
+GeneratorInfo curvatureGenerator() {
+  return GeneratorInfo{GeneratorKind::Curvature,
+                       "curvature",
+                       "Curvature",
+                       "Convex (bright) and concave (dark) areas, for wear and dirt masks.",
+                       {{"in", "Height or normal map", MapSlot::Height}},
+                       MapSlot::AmbientOcclusion,
+                       {choiceOption("from", "Source", {"height", "normal"}, 0,
+                                     "Whether the input is a height map or a normal map."),
+                        numberOption("strength", "Strength", "gain around mid-grey", 0.0, 64.0, 4.0,
+                                     2, "How strongly curvature departs from mid-grey."),
+                        numberOption("radius", "Blur radius", "texels", 0.0, 32.0, 1.0, 1,
+                                     "Smoothing before measuring: larger shows larger forms."),
+                        conventionOption("Convention of a normal-map input."), edgeOption(0)}};
+}
+
+GeneratorInfo packGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::Pack,
+      "pack",
+      "Pack channels",
+      "One texture from several maps, in a layout renderers read: the normal with the height "
+      "in alpha (references 001 and 003: one fetch), or ORM and Unity mask maps for engines. "
+      "Maps not given take their neutral value (AO 1, roughness 1, metallic 0).",
+      {{"normal", "Normal map", MapSlot::Normal, true},
+       {"height", "Height map", MapSlot::Height, true},
+       {"ao", "Ambient occlusion map", MapSlot::AmbientOcclusion, true},
+       {"roughness", "Roughness map", MapSlot::Roughness, true},
+       {"metallic", "Metallic map", MapSlot::Metallic, true}},
+      MapSlot::Normal,
+      {choiceOption("layout", "Layout", {kPackLayoutChoices.begin(), kPackLayoutChoices.end()}, 0,
+                    "normal-height: the normal's RGB and the height in A. orm: R occlusion, G "
+                    "roughness, B metallic (glTF, Unreal). unity-mask: R metallic, G occlusion, "
+                    "B detail mask, A smoothness (HDRP). unity-metallic: R metallic, A "
+                    "smoothness (URP, Built-in)."),
+       flagOption("autoLevels", "Auto-levels height", true,
+                  "normal-height: stretch the height to the full 0..1 range for precision; the "
+                  "material's height scale and bias are adjusted so the relief stays the same."),
+       flagOption("invertHeight", "Invert height", false,
+                  "normal-height: store depth instead of height.")}};
+}
+
+// One function per generator, in GeneratorKind order (generatorInfo indexes them by kind).
 std::vector<GeneratorInfo> buildTable() {
-  return {
-      {GeneratorKind::Normal,
-       "normal",
-       "Normal from height",
-       "Tangent-space normals from the height map's slopes (reference 003, 1.4).",
-       {{"in", "Height map", MapSlot::Height}},
-       MapSlot::Normal,
-       {choiceOption("kernel", "Kernel", {"central", "sobel", "scharr", "sobel5"}, 1,
-                     "How slopes are measured: central differences (sharpest, noisiest), Sobel "
-                     "3x3, Scharr 3x3 (more even in all directions), Sobel 5x5 (smoothest)."),
-        numberOption("strength", "Strength", "slope per unit of height per texel", 0.01, 200.0, 4.0,
-                     2,
-                     "How steep the relief is: a height step of 1.0 over one texel becomes this "
-                     "slope. heightScale x map width reproduces a material's depth exactly."),
-        conventionOption("opengl: green is +Y up the image (Blender, Unity, Godot, glTF); "
-                         "directx: green is +Y down (Unreal)."),
-        edgeOption(0),
-        numberOption("detailFine", "Fine detail", "weight", 0.0, 1.0, 1.0, 2,
-                     "Weight of the slopes of the height as it is."),
-        numberOption("detailMedium", "Medium detail", "weight", 0.0, 1.0, 0.0, 2,
-                     "Weight of the slopes of the height blurred by 2 texels."),
-        numberOption("detailLarge", "Large detail", "weight", 0.0, 1.0, 0.0, 2,
-                     "Weight of the slopes of the height blurred by 4 texels."),
-        numberOption("detailHuge", "Huge detail", "weight", 0.0, 1.0, 0.0, 2,
-                     "Weight of the slopes of the height blurred by 8 texels.")}},
-      {GeneratorKind::Height,
-       "height",
-       "Height from normal",
-       "Integrates a normal map into a height map (Frankot-Chellappa, by FFT); the result is "
-       "normalised to 0..1 and the relief's depth is reported.",
-       {{"in", "Normal map", MapSlot::Normal}},
-       MapSlot::Height,
-       {conventionOption("The input's convention: opengl (+Y up) or directx (+Y down)."),
-        edgeOption(1)}},
-      {GeneratorKind::HeightFromColor,
-       "height-from-color",
-       "Height from colour",
-       "A height guess from a photograph's brightness, with the large-scale shading removed.",
-       {{"in", "Colour map", MapSlot::Color}},
-       MapSlot::Height,
-       {numberOption("radius", "High-pass radius", "texels", 0.0, 512.0, 64.0, 1,
-                     "Brightness changes larger than this are treated as lighting, not height, "
-                     "and removed. 0 keeps them."),
-        numberOption("contrast", "Contrast", "factor around mid-grey", 0.0, 8.0, 1.0, 2,
-                     "Steepens or flattens the height around its middle."),
-        numberOption("levelsLow", "Levels: black", "input level", 0.0, 1.0, 0.0, 3,
-                     "Input level that becomes the lowest height."),
-        numberOption("levelsHigh", "Levels: white", "input level", 0.0, 1.0, 1.0, 3,
-                     "Input level that becomes the highest height."),
-        flagOption("invert", "Invert", false, "Dark is high (e.g. bright grout in a photo)."),
-        edgeOption(0)}},
-      {GeneratorKind::AmbientOcclusion,
-       "ao",
-       "Ambient occlusion from height",
-       "Horizon-based occlusion: how much of the sky each texel sees over the relief around it.",
-       {{"in", "Height map", MapSlot::Height}},
-       MapSlot::AmbientOcclusion,
-       {integerOption("directions", "Directions", "directions", 4, 64, 16,
-                      "Directions searched for the horizon around each texel."),
-        integerOption("steps", "Steps", "samples per direction", 2, 64, 16,
-                      "Samples along each direction out to the radius."),
-        numberOption("radius", "Radius", "texels", 1.0, 256.0, 32.0, 1,
-                     "How far away relief can occlude."),
-        numberOption("depth", "Depth", "texels per unit of height", 0.0, 512.0, 16.0, 1,
-                     "How deep the relief is: a height difference of 1.0 counts as this many "
-                     "texel widths (heightScale x map width for a material)."),
-        numberOption("strength", "Strength", "factor", 0.0, 4.0, 1.0, 2,
-                     "1 is the physical occlusion; more darkens further."),
-        edgeOption(0)}},
-      {GeneratorKind::Curvature,
-       "curvature",
-       "Curvature",
-       "Convex (bright) and concave (dark) areas, for wear and dirt masks.",
-       {{"in", "Height or normal map", MapSlot::Height}},
-       MapSlot::AmbientOcclusion,
-       {choiceOption("from", "Source", {"height", "normal"}, 0,
-                     "Whether the input is a height map or a normal map."),
-        numberOption("strength", "Strength", "gain around mid-grey", 0.0, 64.0, 4.0, 2,
-                     "How strongly curvature departs from mid-grey."),
-        numberOption("radius", "Blur radius", "texels", 0.0, 32.0, 1.0, 1,
-                     "Smoothing before measuring: larger shows larger forms."),
-        conventionOption("Convention of a normal-map input."), edgeOption(0)}},
-      {GeneratorKind::Pack,
-       "pack",
-       "Pack channels",
-       "One texture from several maps, in a layout renderers read: the normal with the height "
-       "in alpha (references 001 and 003: one fetch), or ORM and Unity mask maps for engines. "
-       "Maps not given take their neutral value (AO 1, roughness 1, metallic 0).",
-       {{"normal", "Normal map", MapSlot::Normal, true},
-        {"height", "Height map", MapSlot::Height, true},
-        {"ao", "Ambient occlusion map", MapSlot::AmbientOcclusion, true},
-        {"roughness", "Roughness map", MapSlot::Roughness, true},
-        {"metallic", "Metallic map", MapSlot::Metallic, true}},
-       MapSlot::Normal,
-       {choiceOption("layout", "Layout", {kPackLayoutChoices.begin(), kPackLayoutChoices.end()}, 0,
-                     "normal-height: the normal's RGB and the height in A. orm: R occlusion, G "
-                     "roughness, B metallic (glTF, Unreal). unity-mask: R metallic, G occlusion, "
-                     "B detail mask, A smoothness (HDRP). unity-metallic: R metallic, A "
-                     "smoothness (URP, Built-in)."),
-        flagOption("autoLevels", "Auto-levels height", true,
-                   "normal-height: stretch the height to the full 0..1 range for precision; the "
-                   "material's height scale and bias are adjusted so the relief stays the same."),
-        flagOption("invertHeight", "Invert height", false,
-                   "normal-height: store depth instead of height.")}},
-  };
+  return {normalGenerator(),           heightGenerator(),    heightFromColorGenerator(),
+          ambientOcclusionGenerator(), curvatureGenerator(), packGenerator()};
 }
 
 template <class Enum>
@@ -239,7 +263,11 @@ int findGeneratorOption(GeneratorKind kind, std::string_view name) {
   return -1;
 }
 
-Result<GeneratedMap> runGenerator(const GeneratorRequest& given, const WorkControl& control) {
+namespace {
+
+// The request with trailing optional inputs filled in as null, its inputs checked, and its
+// option values (the defaults when none are given) kept within their declared ranges.
+Result<GeneratorRequest> completedRequest(const GeneratorRequest& given) {
   const GeneratorInfo& info = generatorInfo(given.kind);
   // Trailing optional inputs may be left out of the list.
   GeneratorRequest request = given;
@@ -257,13 +285,23 @@ Result<GeneratedMap> runGenerator(const GeneratorRequest& given, const WorkContr
                        " to generate from");
     }
   }
-  GeneratorValues values =
-      request.values.empty() ? defaultGeneratorValues(request.kind) : request.values;
-  if (values.size() != info.options.size())
+  if (request.values.empty())
+    request.values = defaultGeneratorValues(request.kind);
+  if (request.values.size() != info.options.size())
     return makeError("wrong number of option values");
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    values[i] = sanitizeOptionValue(info.options[i], values[i]);
-  }
+  for (std::size_t i = 0; i < request.values.size(); ++i)
+    request.values[i] = sanitizeOptionValue(info.options[i], request.values[i]);
+  return request;
+}
+
+}  // namespace
+
+Result<GeneratedMap> runGenerator(const GeneratorRequest& given, const WorkControl& control) {
+  Result<GeneratorRequest> completed = completedRequest(given);
+  if (!completed)
+    return makeError(completed.error());
+  const GeneratorRequest& request = completed.value();
+  const GeneratorValues& values = request.values;
   const GeneratorKind kind = request.kind;
   if (kind == GeneratorKind::Pack)
     return runPack(request, values);

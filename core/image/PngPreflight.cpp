@@ -92,6 +92,101 @@ std::uint64_t pngMinimumInflatedBytes(std::uint32_t width, std::uint32_t height,
   return (1 + (rowBits + 7) / 8) * std::uint64_t(height);
 }
 
+namespace {
+
+// What the chunks read so far say.
+struct PngChunkState {
+  PngHeader header;
+  bool sawHeader = false, sawPalette = false, sawData = false, sawIcc = false;
+  std::optional<ColorSpace> fromSrgbOrGamma;
+  std::optional<std::string> colorSpaceName;
+  std::uint64_t idatBytes = 0;
+};
+
+// The header chunk IHDR: 13 bytes with a matching CRC, a size, a colour type and bit depth PNG
+// allows, and methods it knows.
+Status readHeaderChunk(const std::string& path, const std::vector<std::uint8_t>& data,
+                       std::uint32_t length, bool crcMatches, PngHeader& header) {
+  if (length != 13)
+    return invalid(path, "the header chunk IHDR is not 13 bytes");
+  if (!crcMatches)
+    return invalid(path, "the CRC of the header chunk IHDR does not match");
+  header.width = bigEndian32(data.data());
+  header.height = bigEndian32(data.data() + 4);
+  header.bitDepth = data[8];
+  header.colourType = data[9];
+  header.interlace = data[12];
+  if (header.width == 0 || header.height == 0 || header.width > 0x7fffffffu ||
+      header.height > 0x7fffffffu)
+    return invalid(path, "the header gives the size " + std::to_string(header.width) + "x" +
+                             std::to_string(header.height));
+  if (!png::allowedDepth(header.colourType, header.bitDepth))
+    return invalid(path, "colour type " + std::to_string(header.colourType) + " with bit depth " +
+                             std::to_string(header.bitDepth));
+  if (data[10] != 0 || data[11] != 0 || header.interlace > 1)
+    return invalid(path, "unknown compression, filter or interlace method in IHDR");
+  return {};
+}
+
+// An ancillary chunk before the image data whose CRC matches: sRGB, gAMA and iCCP as libpng
+// weighs them, tRNS, and a text chunk naming a colour space. libpng ignores an ancillary chunk
+// that fails its CRC or comes out of place.
+void readAncillaryChunk(const std::string& type, const std::vector<std::uint8_t>& data,
+                        std::uint32_t length, bool textChunk, PngChunkState& state) {
+  const bool beforePalette = !state.sawPalette;
+  if (type == "sRGB" && beforePalette && length == 1 && data[0] <= 3 && !state.sawIcc) {
+    state.fromSrgbOrGamma = ColorSpace::Srgb;
+  } else if (type == "gAMA" && beforePalette && length == 4 && !state.fromSrgbOrGamma) {
+    // The file stores the encoding gamma times 100000; libpng accepts 16 to 625000000.
+    const std::uint32_t stored = bigEndian32(data.data());
+    if (stored >= 16 && stored <= 625000000u) {
+      // OpenImageIO rounds the decoding gamma (1/stored) to hundredths: 1.00 is linear.
+      const float decoding = std::round(100.0f * float(100000.0 / double(stored))) / 100.0f;
+      state.fromSrgbOrGamma = decoding == 1.0f ? ColorSpace::Linear : ColorSpace::Srgb;
+    }
+  } else if (type == "iCCP" && beforePalette) {
+    state.sawIcc = true;  // libpng then ignores a later sRGB chunk ("too many profiles")
+  } else if (type == "tRNS") {
+    const bool fits = state.header.colourType == 0   ? length == 2
+                      : state.header.colourType == 2 ? length == 6
+                      : state.header.colourType == 3 ? state.sawPalette && length > 0
+                                                     : false;
+    state.header.transparencyChunk = fits;
+  } else if (textChunk) {
+    if (std::optional<std::string> name = colorSpaceText(type, data))
+      state.colorSpaceName = std::move(name);
+  }
+}
+
+// The checks once every chunk is read, and the colour space the chunks give.
+Result<PngHeader> checkedHeader(const std::string& path, const PngChunkState& state) {
+  if (!state.sawHeader)
+    return invalid(path, "no header chunk IHDR");
+  if (state.header.colourType == 3 && !state.sawPalette)
+    return invalid(path, "a palette image without a palette (PLTE)");
+  if (!state.sawData)
+    return invalid(path, "no image data (IDAT)");
+  // Checked before the pixels' memory is allocated: a 300-byte file claiming 16384x16384 RGBA
+  // would take 4 GiB. The bound counts the samples as stored, so a 409-byte palette file of
+  // 512x512 (one index byte a pixel) passes where counting the RGB it expands to refused it.
+  const std::uint64_t inflatedAtLeast = pngMinimumInflatedBytes(
+      state.header.width, state.header.height, state.header.bitDepth, state.header.colourType);
+  if (state.idatBytes * kDeflateBestRatio < inflatedAtLeast) {
+    return makeError(path + ": its " + std::to_string(state.idatBytes) +
+                     " bytes of compressed pixel data (IDAT) cannot hold " +
+                     std::to_string(state.header.width) + "x" +
+                     std::to_string(state.header.height) +
+                     " pixels even at deflate's best ratio (1:1032); the file is cut short or "
+                     "its header is damaged");
+  }
+  PngHeader header = state.header;
+  header.colorSpace = state.colorSpaceName ? colorSpaceFromOiioName(*state.colorSpaceName)
+                                           : state.fromSrgbOrGamma.value_or(ColorSpace::Srgb);
+  return header;
+}
+
+}  // namespace
+
 Result<PngHeader> preflightPng(const std::string& path, std::uintmax_t fileBytes) {
   std::ifstream file(path, std::ios::binary);
   std::uint8_t signature[8] = {};
@@ -100,11 +195,7 @@ Result<PngHeader> preflightPng(const std::string& path, std::uintmax_t fileBytes
     return makeError(path +
                      ": cannot read as an image (named .png, but the file does not start "
                      "with PNG's signature)");
-  PngHeader header;
-  bool sawHeader = false, sawPalette = false, sawData = false, sawIcc = false;
-  std::optional<ColorSpace> fromSrgbOrGamma;
-  std::optional<std::string> colorSpaceName;
-  std::uint64_t idatBytes = 0;
+  PngChunkState state;
   std::vector<std::uint8_t> data;
   // Chunk headers, and the data of the few chunks before the image data that say something
   // about the decoded image; a seek past the rest.
@@ -126,9 +217,9 @@ Result<PngHeader> preflightPng(const std::string& path, std::uintmax_t fileBytes
                        std::to_string(at) + " claims " + std::to_string(length) +
                        " bytes; the file has " + std::to_string(after) + " after its header");
     }
-    if (!sawHeader && type != "IHDR")
+    if (!state.sawHeader && type != "IHDR")
       return invalid(path, "the first chunk is \"" + type + "\", not the header IHDR");
-    const bool beforeData = !sawData && type != "IDAT";
+    const bool beforeData = !state.sawData && type != "IDAT";
     const bool textChunk = type == "tEXt" || type == "zTXt" || type == "iTXt";
     const bool wanted =
         type == "IHDR" ||
@@ -145,83 +236,24 @@ Result<PngHeader> preflightPng(const std::string& path, std::uintmax_t fileBytes
           libdeflate_crc32(libdeflate_crc32(0, head + 4, 4), data.data(), length) == stored;
     }
     if (type == "IHDR") {
-      if (sawHeader)
+      if (state.sawHeader)
         return invalid(path, "a second header chunk IHDR");
-      if (length != 13)
-        return invalid(path, "the header chunk IHDR is not 13 bytes");
-      if (!crcMatches)
-        return invalid(path, "the CRC of the header chunk IHDR does not match");
-      header.width = bigEndian32(data.data());
-      header.height = bigEndian32(data.data() + 4);
-      header.bitDepth = data[8];
-      header.colourType = data[9];
-      header.interlace = data[12];
-      if (header.width == 0 || header.height == 0 || header.width > 0x7fffffffu ||
-          header.height > 0x7fffffffu)
-        return invalid(path, "the header gives the size " + std::to_string(header.width) + "x" +
-                                 std::to_string(header.height));
-      if (!png::allowedDepth(header.colourType, header.bitDepth))
-        return invalid(path, "colour type " + std::to_string(header.colourType) +
-                                 " with bit depth " + std::to_string(header.bitDepth));
-      if (data[10] != 0 || data[11] != 0 || header.interlace > 1)
-        return invalid(path, "unknown compression, filter or interlace method in IHDR");
-      sawHeader = true;
+      if (Status read = readHeaderChunk(path, data, length, crcMatches, state.header); !read)
+        return makeError(read.error());
+      state.sawHeader = true;
     } else if (type == "PLTE") {
-      sawPalette = true;
+      state.sawPalette = true;
     } else if (type == "IDAT") {
-      sawData = true;
-      idatBytes += length;
+      state.sawData = true;
+      state.idatBytes += length;
     } else if (wanted && crcMatches) {
-      // libpng ignores an ancillary chunk that fails its CRC or comes out of place.
-      const bool beforePalette = !sawPalette;
-      if (type == "sRGB" && beforePalette && length == 1 && data[0] <= 3 && !sawIcc) {
-        fromSrgbOrGamma = ColorSpace::Srgb;
-      } else if (type == "gAMA" && beforePalette && length == 4 && !fromSrgbOrGamma) {
-        // The file stores the encoding gamma times 100000; libpng accepts 16 to 625000000.
-        const std::uint32_t stored = bigEndian32(data.data());
-        if (stored >= 16 && stored <= 625000000u) {
-          // OpenImageIO rounds the decoding gamma (1/stored) to hundredths: 1.00 is linear.
-          const float decoding = std::round(100.0f * float(100000.0 / double(stored))) / 100.0f;
-          fromSrgbOrGamma = decoding == 1.0f ? ColorSpace::Linear : ColorSpace::Srgb;
-        }
-      } else if (type == "iCCP" && beforePalette) {
-        sawIcc = true;  // libpng then ignores a later sRGB chunk ("too many profiles")
-      } else if (type == "tRNS") {
-        const bool fits = header.colourType == 0   ? length == 2
-                          : header.colourType == 2 ? length == 6
-                          : header.colourType == 3 ? sawPalette && length > 0
-                                                   : false;
-        header.transparencyChunk = fits;
-      } else if (textChunk) {
-        if (std::optional<std::string> name = colorSpaceText(type, data))
-          colorSpaceName = std::move(name);
-      }
+      readAncillaryChunk(type, data, length, textChunk, state);
     }
     at += 12 + std::uintmax_t(length);
     if (type == "IEND")
       break;
   }
-  if (!sawHeader)
-    return invalid(path, "no header chunk IHDR");
-  if (header.colourType == 3 && !sawPalette)
-    return invalid(path, "a palette image without a palette (PLTE)");
-  if (!sawData)
-    return invalid(path, "no image data (IDAT)");
-  // Checked before the pixels' memory is allocated: a 300-byte file claiming 16384x16384 RGBA
-  // would take 4 GiB. The bound counts the samples as stored, so a 409-byte palette file of
-  // 512x512 (one index byte a pixel) passes where counting the RGB it expands to refused it.
-  const std::uint64_t inflatedAtLeast =
-      pngMinimumInflatedBytes(header.width, header.height, header.bitDepth, header.colourType);
-  if (idatBytes * kDeflateBestRatio < inflatedAtLeast) {
-    return makeError(path + ": its " + std::to_string(idatBytes) +
-                     " bytes of compressed pixel data (IDAT) cannot hold " +
-                     std::to_string(header.width) + "x" + std::to_string(header.height) +
-                     " pixels even at deflate's best ratio (1:1032); the file is cut short or "
-                     "its header is damaged");
-  }
-  header.colorSpace = colorSpaceName ? colorSpaceFromOiioName(*colorSpaceName)
-                                     : fromSrgbOrGamma.value_or(ColorSpace::Srgb);
-  return header;
+  return checkedHeader(path, state);
 }
 
 }  // namespace relief::core::inline image

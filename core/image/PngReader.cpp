@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace relief::core::inline image {
@@ -39,28 +40,24 @@ Error damaged(const std::string& path, const std::string& what) {
   return makeError(path + ": the pixel data is damaged or truncated (" + what + ")");
 }
 
-}  // namespace
-
-Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
-  std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file)
-    return makeError(path + ": cannot be opened for reading");
-  const std::streamoff size = file.tellg();
-  if (size < std::streamoff(sizeof kSignature))
-    return PngFastDecode::NotHandled;
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-  file.seekg(0);
-  if (!file.read(reinterpret_cast<char*>(bytes.data()), size))
-    return makeError(path + ": cannot be read");
-  if (std::memcmp(bytes.data(), kSignature, sizeof kSignature) != 0)
-    return PngFastDecode::NotHandled;
-
-  // Walk the chunks; the IDAT payloads are moved together to the front of `bytes` (the file's
-  // own buffer, so no second copy of the compressed stream).
+// What the chunk walk found: the header, the palette and its alphas, and how many bytes of IDAT
+// payload now lie together at the front of the file's buffer.
+struct PngChunks {
   Header header;
   Palette palette;
-  bool sawHeader = false, sawEnd = false;
+  bool sawHeader = false;
   std::size_t compressed = 0;
+};
+
+// Walks the chunks, checking the CRC of every critical one; the IDAT payloads are moved together
+// to the front of `bytes` (the file's own buffer, so no second copy of the compressed stream).
+// Empty when the file holds something this reader leaves to OpenImageIO.
+Result<std::optional<PngChunks>> walkChunks(const std::string& path,
+                                            std::vector<std::uint8_t>& bytes) {
+  PngChunks chunks;
+  Header& header = chunks.header;
+  Palette& palette = chunks.palette;
+  bool sawEnd = false;
   std::size_t at = sizeof kSignature;
   while (at + 12 <= bytes.size() && !sawEnd) {
     const std::uint32_t length = bigEndian32(&bytes[at]);
@@ -82,10 +79,11 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
       header.bitDepth = data[8];
       header.colourType = data[9];
       header.interlace = data[12];
-      sawHeader = true;
+      chunks.sawHeader = true;
     } else if (std::memcmp(type, "IDAT", 4) == 0) {
-      std::memmove(&bytes[compressed], data, length);  // never overlaps forward: compressed < at
-      compressed += length;
+      // Never overlaps forward: compressed < at.
+      std::memmove(&bytes[chunks.compressed], data, length);
+      chunks.compressed += length;
     } else if (std::memcmp(type, "PLTE", 4) == 0) {
       if (length % 3 != 0 || length / 3 > 256 || length == 0)
         return damaged(path, "the palette (PLTE) has " + std::to_string(length) + " bytes");
@@ -96,7 +94,7 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
       }
     } else if (std::memcmp(type, "tRNS", 4) == 0) {
       if (header.colourType != 3)
-        return PngFastDecode::NotHandled;  // colour-key transparency of grey or RGB: OpenImageIO's
+        return std::optional<PngChunks>();  // colour-key transparency of grey or RGB: OpenImageIO's
       if (length > std::uint32_t(palette.entries))
         return damaged(path, "the transparency chunk (tRNS) has more entries than the palette");
       for (std::uint32_t i = 0; i < length; ++i)
@@ -107,52 +105,35 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
     }
     at += std::size_t(length) + 12;
   }
-  const int samples = storedSamplesOf(header.colourType);
-  if (!sawHeader || samples == 0 || header.interlace != 0 ||
-      !allowedDepth(header.colourType, header.bitDepth))
-    return PngFastDecode::NotHandled;
-  const bool indexed = header.colourType == 3;
-  if (indexed && palette.entries == 0)
-    return damaged(path, "a palette image without a palette (PLTE)");
-  // Palette images expand to RGB, or RGBA when tRNS gives alphas, as libpng expands them.
-  const int channels = indexed ? (palette.hasAlpha ? 4 : 3) : samples;
-  if (header.width != std::uint32_t(image.width()) ||
-      header.height != std::uint32_t(image.height()) || channels != image.channels())
-    return PngFastDecode::NotHandled;  // OpenImageIO saw something else; trust its reading
+  return std::optional<PngChunks>(chunks);
+}
 
-  const std::size_t bitsPerPixel = std::size_t(header.bitDepth) * std::size_t(samples);
-  const std::size_t bytesPerPixel = std::max<std::size_t>(1, bitsPerPixel / 8);  // for filters
-  const std::size_t rowBytes = (bitsPerPixel * header.width + 7) / 8;
-  const std::size_t inflatedBytes = (rowBytes + 1) * header.height;
-  if (compressed == 0)
-    return damaged(path, "no IDAT chunk");
-
-  // The stream is inflated into the tail of the image's own float buffer (a row of floats never
-  // takes fewer bytes than the row it is decoded from plus its filter byte), then each row is
-  // unfiltered and converted from the top down. Row y's floats end where row y+1's bytes begin
-  // at the latest, so nothing is overwritten before it is read, and no second buffer the size
-  // of the image is held beside the map (8192x8192 16-bit grey: 128 MiB less at the peak).
-  auto* const floatBytes = reinterpret_cast<std::uint8_t*>(image.data());
-  const std::size_t floatRowBytes = sizeof(float) * std::size_t(channels) * header.width;
-  std::uint8_t* const raw = floatBytes + floatRowBytes * header.height - inflatedBytes;
-  {
-    const std::unique_ptr<libdeflate_decompressor, void (*)(libdeflate_decompressor*)> inflater(
-        libdeflate_alloc_decompressor(), libdeflate_free_decompressor);
-    if (!inflater)
-      return makeError(path + ": not enough memory to decode");
-    // With no "actual size" out-parameter libdeflate demands exactly `inflatedBytes`: a short or
-    // long stream fails like a corrupt one. It checks the Adler-32 too.
-    const libdeflate_result result = libdeflate_zlib_decompress(
-        inflater.get(), bytes.data(), compressed, raw, inflatedBytes, nullptr);
-    if (result != LIBDEFLATE_SUCCESS) {
-      return damaged(path, result == LIBDEFLATE_SHORT_OUTPUT ? "the zlib stream ends early"
-                           : result == LIBDEFLATE_INSUFFICIENT_SPACE
-                               ? "the zlib stream holds more than the image"
-                               : "the zlib stream is corrupt");
-    }
+// Inflates the zlib stream (the first `compressed` bytes of `bytes`) into exactly
+// `inflatedBytes` at `raw`.
+Status inflateStream(const std::string& path, const std::vector<std::uint8_t>& bytes,
+                     std::size_t compressed, std::uint8_t* raw, std::size_t inflatedBytes) {
+  const std::unique_ptr<libdeflate_decompressor, void (*)(libdeflate_decompressor*)> inflater(
+      libdeflate_alloc_decompressor(), libdeflate_free_decompressor);
+  if (!inflater)
+    return makeError(path + ": not enough memory to decode");
+  // With no "actual size" out-parameter libdeflate demands exactly `inflatedBytes`: a short or
+  // long stream fails like a corrupt one. It checks the Adler-32 too.
+  const libdeflate_result result = libdeflate_zlib_decompress(
+      inflater.get(), bytes.data(), compressed, raw, inflatedBytes, nullptr);
+  if (result != LIBDEFLATE_SUCCESS) {
+    return damaged(path, result == LIBDEFLATE_SHORT_OUTPUT ? "the zlib stream ends early"
+                         : result == LIBDEFLATE_INSUFFICIENT_SPACE
+                             ? "the zlib stream holds more than the image"
+                             : "the zlib stream is corrupt");
   }
-  bytes = {};
+  return {};
+}
 
+// Unfilters the inflated rows at `raw` and converts them to floats in `image`, top down.
+Status convertRows(const std::string& path, const Header& header, const Palette& palette,
+                   int channels, const std::uint8_t* raw, std::size_t rowBytes,
+                   std::size_t bytesPerPixel, Image& image) {
+  const bool indexed = header.colourType == 3;
   // Samples of fewer than 8 bits are packed from the high bits down (section 7.2); grey ones
   // scale to 8 bits as libpng expands them (v * 255 / (2^depth - 1)), so the floats match.
   const int depth = header.bitDepth;
@@ -202,6 +183,69 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
     above = row;
     row = row == rows.data() ? rows.data() + rowBytes : rows.data();
   }
+  return {};
+}
+
+}  // namespace
+
+Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  if (!file)
+    return makeError(path + ": cannot be opened for reading");
+  const std::streamoff size = file.tellg();
+  if (size < std::streamoff(sizeof kSignature))
+    return PngFastDecode::NotHandled;
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  file.seekg(0);
+  if (!file.read(reinterpret_cast<char*>(bytes.data()), size))
+    return makeError(path + ": cannot be read");
+  if (std::memcmp(bytes.data(), kSignature, sizeof kSignature) != 0)
+    return PngFastDecode::NotHandled;
+
+  Result<std::optional<PngChunks>> walked = walkChunks(path, bytes);
+  if (!walked)
+    return makeError(walked.error());
+  if (!walked.value())
+    return PngFastDecode::NotHandled;
+  const Header& header = walked.value()->header;
+  const Palette& palette = walked.value()->palette;
+  const bool sawHeader = walked.value()->sawHeader;
+  const std::size_t compressed = walked.value()->compressed;
+  const int samples = storedSamplesOf(header.colourType);
+  if (!sawHeader || samples == 0 || header.interlace != 0 ||
+      !allowedDepth(header.colourType, header.bitDepth))
+    return PngFastDecode::NotHandled;
+  const bool indexed = header.colourType == 3;
+  if (indexed && palette.entries == 0)
+    return damaged(path, "a palette image without a palette (PLTE)");
+  // Palette images expand to RGB, or RGBA when tRNS gives alphas, as libpng expands them.
+  const int channels = indexed ? (palette.hasAlpha ? 4 : 3) : samples;
+  if (header.width != std::uint32_t(image.width()) ||
+      header.height != std::uint32_t(image.height()) || channels != image.channels())
+    return PngFastDecode::NotHandled;  // OpenImageIO saw something else; trust its reading
+
+  const std::size_t bitsPerPixel = std::size_t(header.bitDepth) * std::size_t(samples);
+  const std::size_t bytesPerPixel = std::max<std::size_t>(1, bitsPerPixel / 8);  // for filters
+  const std::size_t rowBytes = (bitsPerPixel * header.width + 7) / 8;
+  const std::size_t inflatedBytes = (rowBytes + 1) * header.height;
+  if (compressed == 0)
+    return damaged(path, "no IDAT chunk");
+
+  // The stream is inflated into the tail of the image's own float buffer (a row of floats never
+  // takes fewer bytes than the row it is decoded from plus its filter byte), then each row is
+  // unfiltered and converted from the top down. Row y's floats end where row y+1's bytes begin
+  // at the latest, so nothing is overwritten before it is read, and no second buffer the size
+  // of the image is held beside the map (8192x8192 16-bit grey: 128 MiB less at the peak).
+  auto* const floatBytes = reinterpret_cast<std::uint8_t*>(image.data());
+  const std::size_t floatRowBytes = sizeof(float) * std::size_t(channels) * header.width;
+  std::uint8_t* const raw = floatBytes + floatRowBytes * header.height - inflatedBytes;
+  if (Status inflated = inflateStream(path, bytes, compressed, raw, inflatedBytes); !inflated)
+    return makeError(inflated.error());
+  bytes = {};
+  if (Status converted =
+          convertRows(path, header, palette, channels, raw, rowBytes, bytesPerPixel, image);
+      !converted)
+    return makeError(converted.error());
   return PngFastDecode::Decoded;
 }
 

@@ -102,67 +102,54 @@ struct Strip {
   bool ok = false;
 };
 
-}  // namespace
-
-Status writePng(const Image& image, const std::string& path, const PngWriteOptions& options) {
-  if (image.isEmpty() || image.channels() < 1 || image.channels() > 4)
-    return makeError(path + ": cannot write a PNG of " + std::to_string(image.channels()) +
-                     " channels");
-  const int bytesPerSample = options.bitsPerChannel == 16 ? 2 : 1;
-  const int bytesPerPixel = bytesPerSample * image.channels();
-  const std::size_t rowBytes = std::size_t(image.width()) * std::size_t(bytesPerPixel);
-  const int rowsPerStrip = int(std::max<std::size_t>(1, kStripBytes / (rowBytes + 1)));
-  const int stripCount = (image.height() + rowsPerStrip - 1) / rowsPerStrip;
-  std::vector<Strip> strips(static_cast<std::size_t>(stripCount));
-
-  parallelFor(stripCount, [&](int s) {
-    Strip& strip = strips[std::size_t(s)];
-    const int first = s * rowsPerStrip, last = std::min(first + rowsPerStrip, image.height());
-    std::vector<std::uint8_t> above(rowBytes, 0), row(rowBytes);
-    if (first > 0)
-      convertRow(image, first - 1, options, above.data());
-    strip.filtered = std::size_t(last - first) * (rowBytes + 1);
-    const std::unique_ptr<std::uint8_t[]> filtered(new std::uint8_t[strip.filtered]);
-    for (int y = first; y < last; ++y) {
-      convertRow(image, y, options, row.data());
-      paethRow(row.data(), above.data(), bytesPerPixel, rowBytes,
-               filtered.get() + std::size_t(y - first) * (rowBytes + 1));
-      std::swap(row, above);
-    }
-    strip.adler = adler32(1, filtered.get(), uInt(strip.filtered));
-    // Raw deflate; every strip but the last ends on a byte boundary (sync flush) so the
-    // streams join into one, the last one finishes it. The zlib header goes before strip 0 and
-    // the combined Adler-32 after the last (appended below).
-    z_stream stream{};
-    if (deflateInit2(&stream, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK)
-      return;
-    const bool lastStrip = s == stripCount - 1;
-    const std::size_t header = s == 0 ? 2 : 0;
-    const std::size_t capacity = header + deflateBound(&stream, uLong(strip.filtered)) + 16;
-    strip.payload.reset(new std::uint8_t[capacity + 4]);  // + 4: the Adler-32 at the end
-    if (s == 0) {
-      strip.payload[0] = 0x78;  // deflate, 32 KiB window
-      strip.payload[1] = 0x01;  // fastest level; (0x78 * 256 + 0x01) is a multiple of 31
-    }
-    stream.next_in = filtered.get();
-    stream.avail_in = uInt(strip.filtered);
-    stream.next_out = strip.payload.get() + header;
-    stream.avail_out = uInt(capacity - header);
-    const int result = deflate(&stream, lastStrip ? Z_FINISH : Z_SYNC_FLUSH);
-    const bool complete =
-        lastStrip ? result == Z_STREAM_END : (result == Z_OK && stream.avail_in == 0);
-    strip.payloadSize = capacity - stream.avail_out;
-    deflateEnd(&stream);
-    const char type[4] = {'I', 'D', 'A', 'T'};
-    strip.crc = crc32(crc32(0, reinterpret_cast<const Bytef*>(type), 4), strip.payload.get(),
-                      uInt(strip.payloadSize));
-    strip.ok = complete;
-  });
-  for (const Strip& strip : strips) {
-    if (!strip.ok)
-      return makeError(path + ": cannot write (zlib could not compress the image)");
+// Strip `s` of the image (rows first..last): converted, Paeth-filtered and deflated on its own.
+// Raw deflate; every strip but the last ends on a byte boundary (sync flush) so the streams join
+// into one, the last one finishes it. The zlib header goes before strip 0 and the combined
+// Adler-32 after the last (appendAdler32).
+void compressStrip(const Image& image, const PngWriteOptions& options, int s, int stripCount,
+                   int rowsPerStrip, std::size_t rowBytes, int bytesPerPixel, Strip& strip) {
+  const int first = s * rowsPerStrip, last = std::min(first + rowsPerStrip, image.height());
+  std::vector<std::uint8_t> above(rowBytes, 0), row(rowBytes);
+  if (first > 0)
+    convertRow(image, first - 1, options, above.data());
+  strip.filtered = std::size_t(last - first) * (rowBytes + 1);
+  const std::unique_ptr<std::uint8_t[]> filtered(new std::uint8_t[strip.filtered]);
+  for (int y = first; y < last; ++y) {
+    convertRow(image, y, options, row.data());
+    paethRow(row.data(), above.data(), bytesPerPixel, rowBytes,
+             filtered.get() + std::size_t(y - first) * (rowBytes + 1));
+    std::swap(row, above);
   }
-  // The zlib stream's Adler-32 of all filtered bytes, from the strips' own.
+  strip.adler = adler32(1, filtered.get(), uInt(strip.filtered));
+  z_stream stream{};
+  if (deflateInit2(&stream, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK)
+    return;
+  const bool lastStrip = s == stripCount - 1;
+  const std::size_t header = s == 0 ? 2 : 0;
+  const std::size_t capacity = header + deflateBound(&stream, uLong(strip.filtered)) + 16;
+  strip.payload.reset(new std::uint8_t[capacity + 4]);  // + 4: the Adler-32 at the end
+  if (s == 0) {
+    strip.payload[0] = 0x78;  // deflate, 32 KiB window
+    strip.payload[1] = 0x01;  // fastest level; (0x78 * 256 + 0x01) is a multiple of 31
+  }
+  stream.next_in = filtered.get();
+  stream.avail_in = uInt(strip.filtered);
+  stream.next_out = strip.payload.get() + header;
+  stream.avail_out = uInt(capacity - header);
+  const int result = deflate(&stream, lastStrip ? Z_FINISH : Z_SYNC_FLUSH);
+  const bool complete =
+      lastStrip ? result == Z_STREAM_END : (result == Z_OK && stream.avail_in == 0);
+  strip.payloadSize = capacity - stream.avail_out;
+  deflateEnd(&stream);
+  const char type[4] = {'I', 'D', 'A', 'T'};
+  strip.crc = crc32(crc32(0, reinterpret_cast<const Bytef*>(type), 4), strip.payload.get(),
+                    uInt(strip.payloadSize));
+  strip.ok = complete;
+}
+
+// The zlib stream's Adler-32 of all filtered bytes, from the strips' own, after the last
+// strip's payload (its room was reserved).
+void appendAdler32(std::vector<Strip>& strips) {
   uLong adler = strips[0].adler;
   for (std::size_t s = 1; s < strips.size(); ++s)
     adler = adler32_combine(adler, strips[s].adler, z_off_t(strips[s].filtered));
@@ -172,8 +159,11 @@ Status writePng(const Image& image, const std::string& path, const PngWriteOptio
   std::copy(adlerBytes.begin(), adlerBytes.end(), lastStrip.payload.get() + lastStrip.payloadSize);
   lastStrip.payloadSize += 4;
   lastStrip.crc = crc32(lastStrip.crc, adlerBytes.data(), 4);
+}
 
-  // Header chunks: size and sample layout, then how to read the colours.
+// The chunks before the image data: size and sample layout, then how to read the colours.
+std::vector<std::vector<std::uint8_t>> headerChunks(const Image& image,
+                                                    const PngWriteOptions& options) {
   std::vector<std::uint8_t> ihdr;
   putBigEndian(ihdr, std::uint32_t(image.width()));
   putBigEndian(ihdr, std::uint32_t(image.height()));
@@ -196,6 +186,32 @@ Status writePng(const Image& image, const std::string& path, const PngWriteOptio
   }
   const std::string text = std::string("oiio:ColorSpace") + '\0' + (srgb ? "sRGB" : "Linear");
   headers.push_back(makeChunk("tEXt", std::vector<std::uint8_t>(text.begin(), text.end())));
+  return headers;
+}
+
+}  // namespace
+
+Status writePng(const Image& image, const std::string& path, const PngWriteOptions& options) {
+  if (image.isEmpty() || image.channels() < 1 || image.channels() > 4)
+    return makeError(path + ": cannot write a PNG of " + std::to_string(image.channels()) +
+                     " channels");
+  const int bytesPerSample = options.bitsPerChannel == 16 ? 2 : 1;
+  const int bytesPerPixel = bytesPerSample * image.channels();
+  const std::size_t rowBytes = std::size_t(image.width()) * std::size_t(bytesPerPixel);
+  const int rowsPerStrip = int(std::max<std::size_t>(1, kStripBytes / (rowBytes + 1)));
+  const int stripCount = (image.height() + rowsPerStrip - 1) / rowsPerStrip;
+  std::vector<Strip> strips(static_cast<std::size_t>(stripCount));
+
+  parallelFor(stripCount, [&](int s) {
+    compressStrip(image, options, s, stripCount, rowsPerStrip, rowBytes, bytesPerPixel,
+                  strips[std::size_t(s)]);
+  });
+  for (const Strip& strip : strips) {
+    if (!strip.ok)
+      return makeError(path + ": cannot write (zlib could not compress the image)");
+  }
+  appendAdler32(strips);
+  const std::vector<std::vector<std::uint8_t>> headers = headerChunks(image, options);
 
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "wb"),
                                                        &std::fclose);

@@ -2,6 +2,9 @@
 // once, with the reference it comes from where there is one.
 #include "core/material/Parameters.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace relief::core::inline material {
 namespace {
 
@@ -31,7 +34,8 @@ ParameterSpec parameter(ParamId id, std::string_view group, Binding binding, Opt
   return spec;
 }
 
-std::vector<ParameterSpec> buildTable() {
+// The relief: its depth, where it sits, how the height map is read.
+std::vector<ParameterSpec> reliefParameters() {
   // clang-format off
   return {
     parameter(ParamId::HeightScale, kRelief, {ParamUse::Always, "uHeightScale"}, numberOption(
@@ -51,6 +55,14 @@ std::vector<ParameterSpec> buildTable() {
         "heightInNormalAlpha", "Height in normal map alpha", false,
         "Take the height from the normal map's alpha channel instead of the height map (the "
         "packed layout of references 001 and 003).")),
+  };
+  // clang-format on
+}
+
+// How densely the techniques sample the height field.
+std::vector<ParameterSpec> samplingParameters() {
+  // clang-format off
+  return {
     parameter(ParamId::MinSamples, kSampling, {ParamUse::Marching, "uMinSamples"}, integerOption(
         "minSamples", "Min samples", "samples", 1, 256, 8,
         "The fewest height samples along the view ray (looking straight at the surface, the "
@@ -83,6 +95,14 @@ std::vector<ParameterSpec> buildTable() {
         "Displacement only: the most segments each triangle edge is split into. Edges are "
         "split into segments about 4 pixels long on screen and no shorter than a quarter "
         "texel of the height map, up to this many.")),
+  };
+  // clang-format on
+}
+
+// Self-shadowing.
+std::vector<ParameterSpec> shadowParameters() {
+  // clang-format off
+  return {
     parameter(ParamId::ShadowMode, kShadows, {ParamUse::Always, ""}, choiceOption(
         "shadowMode", "Shadows", {"off", "hard", "soft"}, 2,
         "Self-shadowing by marching from the visible point toward the light (reference 003, "
@@ -104,6 +124,14 @@ std::vector<ParameterSpec> buildTable() {
         "Welsh's offset limit applied to the light ray (reference 003, 1.3): the light ray "
         "climbs as if the light were at least 45 degrees high, so shadows of a low light stay "
         "short instead of stretching across the surface. Off is physically exact.")),
+  };
+  // clang-format on
+}
+
+// How texture coordinates map the material onto the mesh.
+std::vector<ParameterSpec> mappingParameters() {
+  // clang-format off
+  return {
     parameter(ParamId::Tiling, kMapping, {ParamUse::Always, "uTiling"}, numberOption(
         "tiling", "Tiling", "repeats across the mesh UV range", 0.1, 16.0, 1.0, 2,
         "How many times the maps repeat across the mesh's UV range.")),
@@ -116,6 +144,14 @@ std::vector<ParameterSpec> buildTable() {
         "depthOffset", "Write displaced depth", false,
         "Write the depth of the displaced surface (gl_FragDepth), so it meets other geometry "
         "where the relief really is. Disables early depth testing.")),
+  };
+  // clang-format on
+}
+
+// The surface's shading: normals, the shading model and its constants.
+std::vector<ParameterSpec> surfaceParameters() {
+  // clang-format off
+  return {
     parameter(ParamId::NormalStrength, kSurface, {ParamUse::Always, "uNormalStrength"}, numberOption(
         "normalStrength", "Normal strength", "factor on normal X/Y", 0.0, 4.0, 1.0, 2,
         "Scales the tilt of the normal map (its X and Y) before renormalising; 0 shows the "
@@ -147,6 +183,17 @@ std::vector<ParameterSpec> buildTable() {
         "scales it down per texel.")),
   };
   // clang-format on
+}
+
+// The rows in ParamId order (parameterSpec indexes them by id), one function per panel section.
+std::vector<ParameterSpec> buildTable() {
+  std::vector<ParameterSpec> table;
+  for (const auto& section : {reliefParameters, samplingParameters, shadowParameters,
+                              mappingParameters, surfaceParameters}) {
+    std::vector<ParameterSpec> rows = section();
+    std::move(rows.begin(), rows.end(), std::back_inserter(table));
+  }
+  return table;
 }
 
 }  // namespace

@@ -83,14 +83,16 @@ void squareMax(std::vector<float>& values, std::vector<float>& scratch, int widt
   });
 }
 
-}  // namespace
+// Each cell's lowest and highest corner (the bilinear patch lies between them) and the bound on
+// its gradient: d/dx of the patch varies linearly between its two x edge differences, d/dy
+// likewise. Cells wrap around the map's edges.
+struct CellBounds {
+  std::vector<float> lowest, highest, slope;
+};
 
-ConeMap buildConeMap(const Image& heights, int channel, bool heightIsDepth) {
-  ConeMap cones;
+CellBounds cellBounds(const Image& heights, int channel, bool heightIsDepth) {
   const int width = heights.width();
   const int height = heights.height();
-  if (width <= 0 || height <= 0)
-    return cones;
   const int c = std::clamp(channel, 0, heights.channels() - 1);
   const auto texel = [&](int x, int y) {
     const float value = heights.at(x % width, y % height, c);
@@ -101,23 +103,52 @@ ConeMap buildConeMap(const Image& heights, int channel, bool heightIsDepth) {
     return std::size_t(y) * std::size_t(width) + std::size_t(x);
   };
 
-  // Each cell's lowest and highest corner (the bilinear patch lies between them) and the bound
-  // on its gradient: d/dx of the patch varies linearly between its two x edge differences, d/dy
-  // likewise.
-  std::vector<float> lowest(cells);
-  std::vector<float> highest(cells);
-  std::vector<float> slope(cells);
+  CellBounds bounds{std::vector<float>(cells), std::vector<float>(cells),
+                    std::vector<float>(cells)};
   parallelFor(height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const float h00 = texel(x, y), h10 = texel(x + 1, y);
       const float h01 = texel(x, y + 1), h11 = texel(x + 1, y + 1);
-      lowest[index(x, y)] = std::min(std::min(h00, h10), std::min(h01, h11));
-      highest[index(x, y)] = std::max(std::max(h00, h10), std::max(h01, h11));
+      bounds.lowest[index(x, y)] = std::min(std::min(h00, h10), std::min(h01, h11));
+      bounds.highest[index(x, y)] = std::max(std::max(h00, h10), std::max(h01, h11));
       const float dx = std::max(std::abs(h10 - h00), std::abs(h11 - h01));
       const float dy = std::max(std::abs(h01 - h00), std::abs(h11 - h10));
-      slope[index(x, y)] = std::sqrt(dx * dx + dy * dy);
+      bounds.slope[index(x, y)] = std::sqrt(dx * dx + dy * dy);
     }
   });
+  return bounds;
+}
+
+// The maximum of `values` over each kBlock x kBlock block of cells.
+std::vector<float> blockMaxima(const std::vector<float>& values, int width, int height) {
+  const int blockWidth = width / kBlock, blockHeight = height / kBlock;
+  std::vector<float> maxima(std::size_t(blockWidth) * std::size_t(blockHeight), 0.0f);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      float& most =
+          maxima[std::size_t(y / kBlock) * std::size_t(blockWidth) + std::size_t(x / kBlock)];
+      most = std::max(most, values[std::size_t(y) * std::size_t(width) + std::size_t(x)]);
+    }
+  }
+  return maxima;
+}
+
+}  // namespace
+
+ConeMap buildConeMap(const Image& heights, int channel, bool heightIsDepth) {
+  ConeMap cones;
+  const int width = heights.width();
+  const int height = heights.height();
+  if (width <= 0 || height <= 0)
+    return cones;
+  const std::size_t cells = std::size_t(width) * std::size_t(height);
+  const auto index = [width](int x, int y) {
+    return std::size_t(y) * std::size_t(width) + std::size_t(x);
+  };
+  CellBounds bounds = cellBounds(heights, channel, heightIsDepth);
+  const std::vector<float>& lowest = bounds.lowest;
+  std::vector<float>& highest = bounds.highest;
+  std::vector<float>& slope = bounds.slope;
   const float top = *std::max_element(highest.begin(), highest.end());
 
   // The near square: a segment from the cell to any point within kNearReach cells stays in the
@@ -151,16 +182,8 @@ ConeMap buildConeMap(const Image& heights, int channel, bool heightIsDepth) {
   const bool blocked = width % kBlock == 0 && height % kBlock == 0;
   const int blockWidth = width / kBlock, blockHeight = height / kBlock;
   std::vector<float> blockHighest;
-  if (blocked) {
-    blockHighest.assign(std::size_t(blockWidth) * std::size_t(blockHeight), 0.0f);
-    for (int y = 0; y < height; ++y) {
-      for (int x = 0; x < width; ++x) {
-        float& most = blockHighest[std::size_t(y / kBlock) * std::size_t(blockWidth) +
-                                   std::size_t(x / kBlock)];
-        most = std::max(most, highest[index(x, y)]);
-      }
-    }
-  }
+  if (blocked)
+    blockHighest = blockMaxima(highest, width, height);
   std::vector<float>& within = highest;  // the highest corner within `outer` cells
   int inner = kNearReach;
   int reached = 0;        // the reach `within` holds, in cells

@@ -149,32 +149,29 @@ core::CompressedTexture squishBc1(const core::Image& colour, int fit, float* met
   return texture;
 }
 
-// BC7 against astcenc 4x4 (the same 8 bits per texel) and the other colour formats, on real
-// photographs. Returns whether the targets are met: BC7 normal within 0.5 dB of astcenc
-// -medium in no more of its time, best at or above -medium; BC1 normal within 0.05 dB of
-// libsquish's cluster fit in a tenth of its time; ETC2 RGB 0.5 dB above ETC1.
-bool benchPhotographs(const std::vector<core::CompressionQuality>& qualities) {
+// The photographs (scikit-image's data folder), their total size and names; empty when one
+// cannot be read (the message says what to install).
+std::vector<core::Image> loadPhotographs(double& megapixels, std::string& names) {
   std::vector<core::Image> photos;
-  double megapixels = 0.0;
-  std::string names;
   for (const char* name : kPhotos) {
     auto image = core::loadImage(std::string(kPhotoFolder) + name);
     if (!image) {
       std::printf("photographs: %s (install python3-skimage: tools/install-deps.sh --bench)\n\n",
                   image.error().c_str());
-      return false;
+      return {};
     }
     megapixels += double(image.value().pixelCount()) / 1e6;
     names += std::string(names.empty() ? "" : ", ") + name;
     photos.push_back(std::move(image).value());
   }
-  std::printf(
-      "bench-compress: %zu photographs (%s; %.2f Mpixels), %u threads, fastest of 3 runs\n\n",
-      photos.size(), names.c_str(), megapixels, std::thread::hardware_concurrency());
-  std::printf("| format   | qual.  |    s     |  MPix/s  | mean PSNR | PSNR per photo\n");
-  std::printf("|----------|--------|----------|----------|-----------|---------------\n");
-  // libsquish's BC1 with uniform weights (its default, and what PSNR measures): the reference
-  // for our BC1.
+  return photos;
+}
+
+// libsquish's BC1 with uniform weights (its default, and what PSNR measures), range and
+// cluster fit, printed as table rows: the reference for our BC1. Returns cluster fit's total
+// seconds and mean PSNR.
+std::pair<double, double> benchSquishOnPhotos(const std::vector<core::Image>& photos,
+                                              double megapixels) {
   double squishSeconds = 0.0, squishPsnr = 0.0;
   for (const auto& [fit, name] : {std::pair{int(squish::kColourRangeFit), "range fit"},
                                   std::pair{int(squish::kColourClusterFit), "cluster fit"}}) {
@@ -202,6 +199,25 @@ bool benchPhotographs(const std::vector<core::CompressionQuality>& qualities) {
       squishPsnr = mean;
     }
   }
+  return {squishSeconds, squishPsnr};
+}
+
+// BC7 against astcenc 4x4 (the same 8 bits per texel) and the other colour formats, on real
+// photographs. Returns whether the targets are met: BC7 normal within 0.5 dB of astcenc
+// -medium in no more of its time, best at or above -medium; BC1 normal within 0.05 dB of
+// libsquish's cluster fit in a tenth of its time; ETC2 RGB 0.5 dB above ETC1.
+bool benchPhotographs(const std::vector<core::CompressionQuality>& qualities) {
+  double megapixels = 0.0;
+  std::string names;
+  const std::vector<core::Image> photos = loadPhotographs(megapixels, names);
+  if (photos.empty())
+    return false;
+  std::printf(
+      "bench-compress: %zu photographs (%s; %.2f Mpixels), %u threads, fastest of 3 runs\n\n",
+      photos.size(), names.c_str(), megapixels, std::thread::hardware_concurrency());
+  std::printf("| format   | qual.  |    s     |  MPix/s  | mean PSNR | PSNR per photo\n");
+  std::printf("|----------|--------|----------|----------|-----------|---------------\n");
+  const auto [squishSeconds, squishPsnr] = benchSquishOnPhotos(photos, megapixels);
   double astcMediumSeconds = 0.0, astcMediumPsnr = 0.0, bc7NormalSeconds = 0.0, bc7NormalPsnr = 0.0,
          bc7BestPsnr = -1.0, bc1NormalSeconds = 0.0, bc1NormalPsnr = 0.0, etc1Psnr = 0.0,
          etc2Psnr = 0.0;
