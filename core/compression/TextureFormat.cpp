@@ -10,7 +10,7 @@
 namespace relief::core::inline compression {
 namespace {
 
-constexpr std::array<TextureFormatInfo, 20> kFormats = {{
+constexpr std::array<TextureFormatInfo, kTextureFormatCount> kFormats = {{
     {TextureFormat::Bc1, "bc1", "BC1 (DXT1)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 8,
      FormatLayout::Rgb, 131, 132, makeFourCC('D', 'X', 'T', '1'), 71, 72, 0x83F0, 0x8C4C},
     {TextureFormat::Bc2, "bc2", "BC2 (DXT3)", FormatFamily::Bc, GpuFeature::S3tc, 4, 4, 16,

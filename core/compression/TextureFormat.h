@@ -5,6 +5,7 @@
 // preset parsing) reads these columns. Adding a format is one row here plus its codec.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -37,6 +38,8 @@ enum class TextureFormat {
   Astc6x6Normal,
   Astc8x8Normal,
 };
+// How many formats there are (the last one + 1): TextureFormat.cpp's table has a row for each.
+inline constexpr std::size_t kTextureFormatCount = std::size_t(TextureFormat::Astc8x8Normal) + 1;
 
 // What the channels of a format carry, which decides how a map is fed to it and read back.
 enum class FormatLayout {

@@ -77,7 +77,7 @@ constexpr std::array kKinds = {
                    false, false, runUnityHdrp},
 };
 
-static_assert(kKinds.size() == std::size_t(ExportKind::UnityHdrp) + 1, "one entry per kind");
+static_assert(kKinds.size() == kExportKindCount, "one row per export kind");
 constexpr bool rowsInEnumOrder() {
   for (std::size_t i = 0; i < kKinds.size(); ++i) {
     if (std::size_t(kKinds[i].kind) != i)

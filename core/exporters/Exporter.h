@@ -11,6 +11,7 @@
 #include "core/mesh/Mesh.h"
 #include "core/preset/MaterialPreset.h"
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
@@ -20,6 +21,8 @@
 namespace relief::core::inline exporters {
 
 enum class ExportKind { Package, Gltf, Godot, Unreal, UnityUrp, UnityHdrp };
+// How many kinds there are (the last one + 1): Exporter.cpp's table has a row for each.
+inline constexpr std::size_t kExportKindCount = std::size_t(ExportKind::UnityHdrp) + 1;
 
 struct ExportRequest;
 struct ExportResult;

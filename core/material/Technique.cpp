@@ -40,6 +40,7 @@ constexpr bool rowsInEnumOrder() {
   }
   return true;
 }
+static_assert(kTechniques.size() == kTechniqueCount, "one row per technique");
 static_assert(rowsInEnumOrder(), "the functions below index the rows by technique");
 
 constexpr std::array<Technique, kTechniques.size()> techniqueList() {

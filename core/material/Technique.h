@@ -2,6 +2,7 @@
 // and the presets' "technique" key.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -19,6 +20,8 @@ enum class Technique {
   Cone,             // exact: cone steps through empty space to the bilinear cell (Dummer 2006)
   Displacement,     // tessellated geometry moved by the height: the geometric reference
 };
+// How many techniques there are (the last one + 1): Technique.cpp's table has a row for each.
+inline constexpr std::size_t kTechniqueCount = std::size_t(Technique::Displacement) + 1;
 
 // Whether the technique marches along the view ray (and so can self-shadow and has a cost
 // that depends on the sample counts).

@@ -26,10 +26,23 @@ constexpr std::array kViews = {
     ViewInfo{DebugView::Error, "error", "UV error vs exact trace"},
 };
 
-constexpr std::array kViewList = {DebugView::Shading, DebugView::Height,   DebugView::Normal,
-                                  DebugView::Uv,      DebugView::Offset,   DebugView::Steps,
-                                  DebugView::Shadow,  DebugView::Tangents, DebugView::Mip,
-                                  DebugView::Depth,   DebugView::Error};
+static_assert(kViews.size() == kDebugViewCount, "one row per debug view");
+constexpr bool rowsInEnumOrder() {
+  for (std::size_t i = 0; i < kViews.size(); ++i) {
+    if (std::size_t(kViews[i].view) != i)
+      return false;
+  }
+  return true;
+}
+static_assert(rowsInEnumOrder(), "debugViewName and debugViewLabel index the rows by view");
+
+constexpr std::array<DebugView, kViews.size()> viewList() {
+  std::array<DebugView, kViews.size()> list{};
+  for (std::size_t i = 0; i < kViews.size(); ++i)
+    list[i] = kViews[i].view;
+  return list;
+}
+constexpr std::array kViewList = viewList();
 
 }  // namespace
 

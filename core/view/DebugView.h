@@ -2,6 +2,7 @@
 // the CLI's --view values.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -21,6 +22,8 @@ enum class DebugView {
   Depth,     // distance to the eye of what the depth buffer gets (displaced with depthOffset)
   Error,     // UV error in texels against the exact reference tracer (computed on the CPU)
 };
+// How many views there are (the last one + 1): DebugView.cpp's table has a row for each.
+inline constexpr std::size_t kDebugViewCount = std::size_t(DebugView::Error) + 1;
 
 std::span<const DebugView> allDebugViews();
 std::string_view debugViewName(DebugView view);
