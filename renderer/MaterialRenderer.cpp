@@ -19,7 +19,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <string>
 #include <vector>
 
 namespace relief::renderer {
@@ -258,9 +257,8 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   if (isPbr(material))
     bindEnvironment(program, frame.view.environment);
   for (MapSlot slot : core::kAllMapSlots) {
-    // The shader declares the flags it reads (a slot it always samples has none: ignored).
-    const std::string presence = "uHas" + std::string(core::mapSlotSampler(slot).substr(1));
-    program.setUniformValue(presence.c_str(), material.hasMap(slot));
+    if (const std::string_view flag = core::mapSlotPresenceFlag(slot); !flag.empty())
+      program.setUniformValue(flag.data(), material.hasMap(slot));
   }
   // A natively uploaded two-channel normal (BC5, EAC RG11, DXT5nm swizzled) has no Z texel.
   const auto& normal = material.map(MapSlot::Normal).compressed;
@@ -422,10 +420,8 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
                                                          : QVector2D(1.0f, 1.0f));
   program.setUniformValue("uHeightQuantum", heightQuantum(heightSource));
 
-  for (MapSlot slot : core::kAllMapSlots) {
-    const std::string sampler(core::mapSlotSampler(slot));
-    program.setUniformValue(sampler.c_str(), kFirstMapUnit + int(slot));
-  }
+  for (MapSlot slot : core::kAllMapSlots)
+    program.setUniformValue(core::mapSlotSampler(slot).data(), kFirstMapUnit + int(slot));
 }
 
 // The step between a height map's stored levels, in normalised height: self-shadow rays start

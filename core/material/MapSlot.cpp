@@ -13,7 +13,11 @@ struct SlotInfo {
   std::string_view name;
   std::string_view label;
   MapTexels texels;
-  std::string_view sampler;  // the shaders' sampler2D (shaders/include/material_inputs.glsl)
+  // The shaders' sampler2D and, for a slot they sample only when the material has its map, the
+  // bool saying so (shaders/include/material_inputs.glsl); empty when there is none. Literals:
+  // the renderer passes them to GL as C strings.
+  std::string_view sampler;
+  std::string_view presence;
   // What an empty scalar slot means: the top surface, no occlusion, no roughness (the parameter
   // alone applies), a metallic texel of 1 (pbr multiplies the metallic factor by it).
   float neutral;
@@ -29,6 +33,7 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
      "Colour",
      MapTexels::Colour,
      "uColorMap",
+     "",
      0.0f,
      {"color", "colour", "albedo", "diffuse", "basecolor", "diff"},
      {"d", "cc", "col", "c"}},
@@ -36,6 +41,7 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
      "Normal",
      MapTexels::Normal,
      "uNormalMap",
+     "",
      0.0f,
      {"normal", "nrm", "norm", "nor", "normalgl", "normaldx"},
      {"n", "nm", "nml", ""}},
@@ -43,6 +49,7 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
      "Height",
      MapTexels::Scalar,
      "uHeightMap",
+     "",
      1.0f,
      {"height", "disp", "displacement", "bump", "depth", "parallax"},
      {"z", "h", "hm", "heightmap"}},
@@ -50,6 +57,7 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
      "Ambient occlusion",
      MapTexels::Scalar,
      "uOcclusionMap",
+     "uHasOcclusionMap",
      1.0f,
      {"ao", "occlusion", "ambientocclusion", "", "", ""},
      {"occ", "", "", ""}},
@@ -57,6 +65,7 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
      "Roughness",
      MapTexels::Scalar,
      "uRoughnessMap",
+     "uHasRoughnessMap",
      0.0f,
      {"roughness", "rough", "rgh", "", "", ""},
      {"", "", "", ""}},
@@ -64,6 +73,7 @@ constexpr std::array<SlotInfo, kMapSlotCount> kSlots = {{
      "Metallic",
      MapTexels::Scalar,
      "uMetallicMap",
+     "uHasMetallicMap",
      1.0f,
      {"metallic", "metalness", "metal", "mtl", "", ""},
      {"", "", "", ""}},
@@ -111,6 +121,10 @@ MapTexels mapSlotTexels(MapSlot slot) {
 
 std::string_view mapSlotSampler(MapSlot slot) {
   return kSlots[std::size_t(slot)].sampler;
+}
+
+std::string_view mapSlotPresenceFlag(MapSlot slot) {
+  return kSlots[std::size_t(slot)].presence;
 }
 
 float mapSlotNeutralValue(MapSlot slot) {

@@ -29,9 +29,11 @@ std::string_view mapSlotLabel(MapSlot slot);  // "Colour", "Normal", ...
 std::optional<MapSlot> findMapSlot(std::string_view name);
 
 MapTexels mapSlotTexels(MapSlot slot);
-// The sampler the shaders read the slot from ("uOcclusionMap"); "uHas" + the rest
-// ("uHasOcclusionMap") says whether the material has the map.
+// The sampler the shaders read the slot from ("uOcclusionMap"), and the bool that says whether
+// the material has the map ("uHasOcclusionMap"; empty for a slot always sampled, whose empty
+// map is the neutral texel). Both view string literals, so data() is a C string.
 std::string_view mapSlotSampler(MapSlot slot);
+std::string_view mapSlotPresenceFlag(MapSlot slot);
 // The value an empty scalar slot samples as (height 1, AO 1, roughness 0, metallic 1).
 float mapSlotNeutralValue(MapSlot slot);
 // Colour maps are sRGB; everything else is linear data (DESIGN.md).

@@ -96,17 +96,22 @@ TEST(MapSlot, TheTableSaysWhatEachSlotHoldsAndWhatEmptyMeans) {
   EXPECT_EQ(mapSlotNeutralValue(MapSlot::Metallic), 1.0f);
 }
 
-// The renderer binds each slot's texture to the sampler its row names; a name the shader does
-// not declare would leave the map unsampled without an error from GL.
+// The renderer binds each slot's texture to the sampler its row names and sets its presence
+// flag; a name the shader does not declare would be dropped by GL without an error.
 TEST(MapSlot, EverySlotsSamplerIsDeclaredInTheShader) {
   std::ifstream file(test::sourcePath("shaders/include/material_inputs.glsl"));
   ASSERT_TRUE(file) << "material_inputs.glsl not found";
   std::stringstream source;
   source << file.rdbuf();
   for (MapSlot slot : kAllMapSlots) {
-    const std::string declaration = "uniform sampler2D " + std::string(mapSlotSampler(slot)) + ";";
-    EXPECT_NE(source.str().find(declaration), std::string::npos)
-        << mapSlotName(slot) << ": no '" << declaration << "'";
+    const std::string sampler = "uniform sampler2D " + std::string(mapSlotSampler(slot)) + ";";
+    EXPECT_NE(source.str().find(sampler), std::string::npos)
+        << mapSlotName(slot) << ": no '" << sampler << "'";
+    if (mapSlotPresenceFlag(slot).empty())
+      continue;
+    const std::string flag = "uniform bool " + std::string(mapSlotPresenceFlag(slot)) + ";";
+    EXPECT_NE(source.str().find(flag), std::string::npos)
+        << mapSlotName(slot) << ": no '" << flag << "'";
   }
 }
 
