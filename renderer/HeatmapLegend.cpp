@@ -37,32 +37,24 @@ int maxSamplesPerPixel(const core::Material& material) {
 
 std::optional<HeatmapLegend> legendFor(core::DebugView view, const core::Material& material,
                                        double errorMaxTexels) {
-  switch (view) {
-    case core::DebugView::Steps:
+  switch (core::debugViewScale(view)) {
+    case core::ViewScale::SamplesPerPixel:
       return HeatmapLegend{QStringLiteral("height samples per pixel"),
                            double(maxSamplesPerPixel(material)), QColor(), QString()};
-    case core::DebugView::Mip:
+    case core::ViewScale::MipLevel:
       return HeatmapLegend{QStringLiteral("height map mip level"), kMipDisplayLevels, QColor(),
                            QString()};
-    case core::DebugView::Error: {
+    case core::ViewScale::UvErrorTexels: {
       const int grey = int(std::lround(core::kErrorMinifiedGrey * 255.0f));
       return HeatmapLegend{QStringLiteral("UV error vs exact trace (texels)"), errorMaxTexels,
                            QColor(grey, grey, grey),
                            QStringLiteral("map minified (mip level %1 or more): not counted")
                                .arg(double(core::kErrorMaxMipLevel))};
     }
-    // Views of values, not of a scale: no legend.
-    case core::DebugView::Shading:
-    case core::DebugView::Height:
-    case core::DebugView::Normal:
-    case core::DebugView::Uv:
-    case core::DebugView::Offset:
-    case core::DebugView::Shadow:
-    case core::DebugView::Tangents:
-    case core::DebugView::Depth:
+    case core::ViewScale::None:
       return std::nullopt;
   }
-  return std::nullopt;  // not reached: every view is handled above
+  return std::nullopt;  // not reached: every scale is handled above
 }
 
 void drawHeatmapLegend(QPainter& painter, const QRect& area, const HeatmapLegend& legend) {

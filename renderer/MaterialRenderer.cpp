@@ -160,8 +160,10 @@ ShaderProgram* MaterialRenderer::programFor(const core::Material& material,
       paths.tessellationControl = "material.tesc";
       paths.tessellationEvaluation = "material.tese";
     }
+    std::vector<std::string> allDefines = materialTableDefines();
+    allDefines.insert(allDefines.end(), defines.begin(), defines.end());
     auto built = std::make_unique<ShaderProgram>();
-    if (core::Status status = built->build(paths, defines); !status) {
+    if (core::Status status = built->build(paths, allDefines); !status) {
       m_materialPrograms.erase(joined(defines));
       error = status.error();
       return nullptr;

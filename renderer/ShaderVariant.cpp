@@ -1,7 +1,39 @@
 // ShaderVariant; see ShaderVariant.h.
 #include "renderer/ShaderVariant.h"
 
+#include "core/material/MapSlot.h"
+
+#include <cctype>
+
 namespace relief::renderer {
+namespace {
+
+std::vector<std::string> buildTableDefines() {
+  std::vector<std::string> defines;
+  for (core::DebugView view : core::allDebugViews()) {
+    std::string name = "VIEW_";
+    for (char c : core::debugViewName(view))  // "uv" -> VIEW_UV; a '-' in a name becomes '_'
+      name += std::isalnum(static_cast<unsigned char>(c))
+                  ? char(std::toupper(static_cast<unsigned char>(c)))
+                  : '_';
+    defines.push_back(name + " " + std::to_string(int(view)));
+  }
+  std::string slots = "MAP_SLOT_UNIFORMS";
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    slots += " uniform sampler2D " + std::string(core::mapSlotSampler(slot)) + ";";
+    if (!core::mapSlotPresenceFlag(slot).empty())
+      slots += " uniform bool " + std::string(core::mapSlotPresenceFlag(slot)) + ";";
+  }
+  defines.push_back(slots);
+  return defines;
+}
+
+}  // namespace
+
+const std::vector<std::string>& materialTableDefines() {
+  static const std::vector<std::string> defines = buildTableDefines();
+  return defines;
+}
 
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
                                                FrameOutput output) {

@@ -16,6 +16,14 @@ namespace relief::renderer {
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
                                                FrameOutput output);
 
+// The #defines every material program gets from core's tables, the same in every variant (so
+// built once, and not part of the cache key): VIEW_<NAME> with each debug view's number
+// (core/view/DebugView.cpp's rows, which DEBUG_VIEW is compared with), and MAP_SLOT_UNIFORMS,
+// the declarations of each map slot's sampler and presence flag (core/material/MapSlot.cpp's
+// rows), which shaders/include/material_inputs.glsl expands. A new view or slot is then a row
+// and the shader code that uses it, never a declaration kept in step by hand.
+const std::vector<std::string>& materialTableDefines();
+
 // Whether the program has the tessellation stages (material.tesc/tese) and draws patches: the
 // displacement technique, except for the eye-ray output, which wants the rays' entry points on
 // the undisplaced mesh (the exact tracer starts there).

@@ -14,8 +14,9 @@ struct SlotInfo {
   std::string_view label;
   MapTexels texels;
   // The shaders' sampler2D and, for a slot they sample only when the material has its map, the
-  // bool saying so (shaders/include/material_inputs.glsl); empty when there is none. Literals:
-  // the renderer passes them to GL as C strings.
+  // bool saying so; empty when there is none. The renderer declares both in the shaders from
+  // here (renderer/ShaderVariant.cpp) and binds them. Literals: it passes them to GL as C
+  // strings.
   std::string_view sampler;
   std::string_view presence;
   // What an empty scalar slot means: the top surface, no occlusion, no roughness (the parameter

@@ -8,22 +8,25 @@ namespace {
 
 struct ViewInfo {
   DebugView view;
-  std::string_view name;
+  std::string_view name;  // also the shaders' VIEW_<NAME> (renderer/ShaderVariant.cpp)
   std::string_view label;
+  bool data;  // values, not colours: written as float EXR on request
+  ViewScale scale;
 };
 
+using enum ViewScale;
 constexpr std::array kViews = {
-    ViewInfo{DebugView::Shading, "shading", "Shading"},
-    ViewInfo{DebugView::Height, "height", "Height"},
-    ViewInfo{DebugView::Normal, "normal", "Normal"},
-    ViewInfo{DebugView::Uv, "uv", "Final UV"},
-    ViewInfo{DebugView::Offset, "offset", "Parallax offset"},
-    ViewInfo{DebugView::Steps, "steps", "Samples per pixel (cost)"},
-    ViewInfo{DebugView::Shadow, "shadow", "Self-shadow"},
-    ViewInfo{DebugView::Tangents, "tangents", "Tangents"},
-    ViewInfo{DebugView::Mip, "mip", "Mip level"},
-    ViewInfo{DebugView::Depth, "depth", "Depth"},
-    ViewInfo{DebugView::Error, "error", "UV error vs exact trace"},
+    ViewInfo{DebugView::Shading, "shading", "Shading", false, None},
+    ViewInfo{DebugView::Height, "height", "Height", true, None},
+    ViewInfo{DebugView::Normal, "normal", "Normal", false, None},
+    ViewInfo{DebugView::Uv, "uv", "Final UV", true, None},
+    ViewInfo{DebugView::Offset, "offset", "Parallax offset", true, None},
+    ViewInfo{DebugView::Steps, "steps", "Samples per pixel (cost)", true, SamplesPerPixel},
+    ViewInfo{DebugView::Shadow, "shadow", "Self-shadow", true, None},
+    ViewInfo{DebugView::Tangents, "tangents", "Tangents", false, None},
+    ViewInfo{DebugView::Mip, "mip", "Mip level", true, MipLevel},
+    ViewInfo{DebugView::Depth, "depth", "Depth", true, None},
+    ViewInfo{DebugView::Error, "error", "UV error vs exact trace", true, UvErrorTexels},
 };
 
 static_assert(kViews.size() == kDebugViewCount, "one row per debug view");
@@ -65,9 +68,10 @@ std::optional<DebugView> findDebugView(std::string_view name) {
 }
 
 bool isDataView(DebugView view) {
-  return view == DebugView::Height || view == DebugView::Uv || view == DebugView::Offset ||
-         view == DebugView::Steps || view == DebugView::Shadow || view == DebugView::Mip ||
-         view == DebugView::Depth || view == DebugView::Error;
+  return kViews[std::size_t(view)].data;
+}
+ViewScale debugViewScale(DebugView view) {
+  return kViews[std::size_t(view)].scale;
 }
 
 }  // namespace relief::core::inline view

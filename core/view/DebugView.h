@@ -33,4 +33,9 @@ std::optional<DebugView> findDebugView(std::string_view name);
 // Views whose values are data, not colours: the CLI can write them as float EXR.
 bool isDataView(DebugView view);
 
+// What a view's heat map colours measure, which the viewport and `render` draw as a legend
+// (renderer/HeatmapLegend.cpp); None for a view of values, not of a scale.
+enum class ViewScale { None, SamplesPerPixel, MipLevel, UvErrorTexels };
+ViewScale debugViewScale(DebugView view);
+
 }  // namespace relief::core::inline view

@@ -1,15 +1,7 @@
-// Debug view ids: DEBUG_VIEW is one of these (renderer/ShaderVariant.cpp), in the order of
-// core::DebugView. VIEW_RAY is internal: the eye ray per pixel for the CPU error view.
-#define VIEW_SHADING 0
-#define VIEW_HEIGHT 1
-#define VIEW_NORMAL 2
-#define VIEW_UV 3
-#define VIEW_OFFSET 4
-#define VIEW_STEPS 5
-#define VIEW_SHADOW 6
-#define VIEW_TANGENTS 7
-#define VIEW_MIP 8
-#define VIEW_DEPTH 9
+// Debug views: DEBUG_VIEW is the number of one of core::DebugView's rows, and VIEW_<NAME> the
+// number of each (VIEW_SHADING, VIEW_HEIGHT, ... from the rows' names), all #defined by the
+// renderer (renderer/ShaderVariant.cpp, materialTableDefines). VIEW_RAY is internal: the eye
+// ray per pixel for the CPU error view.
 #define VIEW_RAY 100
 
 #ifndef DEBUG_VIEW

@@ -3,12 +3,13 @@
 // change the code (technique, shadow mode, UV edge, depth offset, packed height, debug view)
 // are #defines prepended by the renderer instead (renderer/ShaderVariant.cpp).
 
-uniform sampler2D uColorMap;
-uniform sampler2D uNormalMap;
-uniform sampler2D uHeightMap;
-uniform sampler2D uOcclusionMap;
-uniform sampler2D uRoughnessMap;
-uniform sampler2D uMetallicMap;
+// Each map slot's sampler (uColorMap, uNormalMap, uHeightMap, uOcclusionMap, uRoughnessMap,
+// uMetallicMap) and, for a slot sampled only when the material has its map, its presence flag
+// (uHasOcclusionMap, uHasRoughnessMap, uHasMetallicMap: an empty slot is not sampled and its
+// neutral value is used instead, a texture fetch saved per pixel for each, which llvmpipe
+// feels). The renderer #defines this from core/material/MapSlot.cpp's rows
+// (renderer/ShaderVariant.cpp, materialTableDefines), so a new slot needs no line here.
+MAP_SLOT_UNIFORMS
 uniform vec2 uHeightMapSize;    // texels, for views measured in texels
 uniform float uHeightQuantum;   // the height map's step: 1/255 for 8 bits, 0 for float
 
@@ -35,11 +36,6 @@ uniform float uSpecular;        // highlight strength
 uniform float uShininess;       // Blinn-Phong exponent
 uniform float uMetallic;        // glTF metallicFactor
 uniform float uRoughness;       // glTF roughnessFactor (perceptual)
-// Which optional slots hold a map: an empty one is not sampled (its neutral value is used), a
-// texture fetch saved per pixel for each, which llvmpipe feels.
-uniform bool uHasOcclusionMap;  // else 1: open
-uniform bool uHasRoughnessMap;  // else 0 (classic: the shininess as set; pbr: the factor alone)
-uniform bool uHasMetallicMap;   // else 1: the metallic factor alone
 uniform sampler2D uSplitSumLut; // (A, B) over N.V (s) and roughness (t) (core/shading)
 
 uniform vec3 uCameraPosition;   // world space

@@ -1,11 +1,6 @@
 // Assigning dropped files to map slots by the hints in their names.
 #include "core/material/MapSlot.h"
 
-#include "support/TestPaths.h"
-
-#include <fstream>
-#include <sstream>
-
 #include <gtest/gtest.h>
 
 namespace relief::core {
@@ -94,25 +89,6 @@ TEST(MapSlot, TheTableSaysWhatEachSlotHoldsAndWhatEmptyMeans) {
   EXPECT_EQ(mapSlotNeutralValue(MapSlot::AmbientOcclusion), 1.0f);
   EXPECT_EQ(mapSlotNeutralValue(MapSlot::Roughness), 0.0f);
   EXPECT_EQ(mapSlotNeutralValue(MapSlot::Metallic), 1.0f);
-}
-
-// The renderer binds each slot's texture to the sampler its row names and sets its presence
-// flag; a name the shader does not declare would be dropped by GL without an error.
-TEST(MapSlot, EverySlotsSamplerIsDeclaredInTheShader) {
-  std::ifstream file(test::sourcePath("shaders/include/material_inputs.glsl"));
-  ASSERT_TRUE(file) << "material_inputs.glsl not found";
-  std::stringstream source;
-  source << file.rdbuf();
-  for (MapSlot slot : kAllMapSlots) {
-    const std::string sampler = "uniform sampler2D " + std::string(mapSlotSampler(slot)) + ";";
-    EXPECT_NE(source.str().find(sampler), std::string::npos)
-        << mapSlotName(slot) << ": no '" << sampler << "'";
-    if (mapSlotPresenceFlag(slot).empty())
-      continue;
-    const std::string flag = "uniform bool " + std::string(mapSlotPresenceFlag(slot)) + ";";
-    EXPECT_NE(source.str().find(flag), std::string::npos)
-        << mapSlotName(slot) << ": no '" << flag << "'";
-  }
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 // ShaderProgram against a real driver: a compile error is reported as the original file and
-// line (through the #include resolver), and a failed rebuild keeps the last good program.
+// line (through the #include resolver), and a failed rebuild keeps the last good program; the
+// material program reads every map slot its table declares.
+#include "core/material/MapSlot.h"
 #include "renderer/OpenGLProbe.h"
 #include "renderer/ShaderProgram.h"
+#include "renderer/ShaderVariant.h"
 #include "support/OffscreenFixture.h"
 
 #include <QOffscreenSurface>
@@ -47,6 +50,42 @@ TEST_F(ShaderProgramWithDriver, ErrorsPointAtTheIncludedFileAndLine) {
   // The previous program is still the one in use.
   EXPECT_TRUE(program.isValid());
   EXPECT_EQ(&program.program(), good);
+  program.release();
+  context.doneCurrent();
+}
+
+// The samplers and presence flags are declared from core/material/MapSlot.cpp's rows
+// (materialTableDefines); a row the shader never reads, or reads under another name, would
+// leave the map unbound without an error from GL. An active uniform is one the linked program
+// reads, so each slot's sampler and flag must have a location.
+TEST_F(ShaderProgramWithDriver, TheMaterialProgramReadsEveryMapSlotsSamplerAndFlag) {
+  QOpenGLContext context;
+  context.setFormat(renderer::requiredSurfaceFormat());
+  ASSERT_TRUE(context.create());
+  QOffscreenSurface surface;
+  surface.setFormat(context.format());
+  surface.create();
+  ASSERT_TRUE(context.makeCurrent(&surface));
+
+  core::Material material;  // pbr reads every slot (classic ignores metallic)
+  material.setParameter(core::ParamId::Shading, double(int(core::ShadingModel::Pbr)));
+  std::vector<std::string> defines = renderer::materialTableDefines();
+  for (const std::string& define : renderer::materialShaderDefines(
+           material, core::DebugView::Shading, renderer::FrameOutput::Display))
+    defines.push_back(define);
+  renderer::ShaderProgram program;
+  const core::Status built = program.build("material.vert", "material.frag", defines);
+  ASSERT_TRUE(built.ok()) << built.error();
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    const std::string sampler(core::mapSlotSampler(slot));
+    EXPECT_GE(program.program().uniformLocation(sampler.c_str()), 0)
+        << core::mapSlotName(slot) << ": " << sampler << " is not read";
+    const std::string flag(core::mapSlotPresenceFlag(slot));
+    if (!flag.empty()) {
+      EXPECT_GE(program.program().uniformLocation(flag.c_str()), 0)
+          << core::mapSlotName(slot) << ": " << flag << " is not read";
+    }
+  }
   program.release();
   context.doneCurrent();
 }

@@ -2,6 +2,7 @@
 // resources), is accepted by glslangValidator, the Khronos reference compiler. This catches
 // what llvmpipe tolerates but a stricter driver would reject.
 #include "renderer/ShaderProgram.h"
+#include "renderer/ShaderVariant.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +42,7 @@ TEST(ShaderValidation, EveryStageCompilesWithGlslang) {
                           {"background.vert", ".vert"}, {"background.frag", ".frag"}};
   for (const Stage& stage : stages) {
     core::Result<ResolvedShader> resolved =
-        resolveShaderIncludes(stage.path, loadShaderSource, shaderPrelude({}));
+        resolveShaderIncludes(stage.path, loadShaderSource, shaderPrelude(materialTableDefines()));
     ASSERT_TRUE(resolved.ok()) << resolved.error();
     const std::string file = test::scratchFolder() + "/expanded_" + stage.path + stage.extension;
     std::ofstream(file) << resolved->source;
