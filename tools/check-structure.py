@@ -28,7 +28,7 @@ EXTENSION_ENUMS = [
     "Technique", "MapSlot", "DebugView", "ExportKind", "GeneratorKind", "PackageMapFormat",
     "PackageTextures", "UnityPipeline", "ToneMapper", "Background", "ShadowMode",
     "ShadingModel", "PrimitiveShape", "BuiltInEnvironment", "CompressionQuality", "MapTexels",
-    "ParamKind",
+    "ParamKind", "ViewScale", "Ktx2Samples",
 ]
 CASE_OF_ENUM = re.compile(r"\bcase\s+(?:[\w:]*::)?(" + "|".join(EXTENSION_ENUMS) + r")::\w+")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"core/(\w+)/', re.MULTILINE)

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace relief::core::inline compression {
 namespace {
@@ -222,6 +224,8 @@ void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool percep
     for (int t = 0; t < 16; ++t)
       values[t] = std::clamp(texels[t][source], 0.0f, 1.0f) * 255.0f;
     encodeChannelBlock(values, validMask, quality, out);
+  } else if (format != TextureFormat::Bc1) {
+    throwNotOfFamily("encodeBcBlock", format);
   }
   // The colour half. DXT5nm's red and blue carry nothing, so the fit spends everything on
   // green.
@@ -238,60 +242,43 @@ void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool percep
 }
 
 void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels) {
-  switch (format) {
-    case TextureFormat::Bc1:
-      decodeColour(in, true, texels);
-      return;
-    case TextureFormat::Bc2:
-      decodeColour(in + 8, false, texels);
-      for (int t = 0; t < 16; ++t)
-        texels[t][3] = float((in[t / 2] >> (4 * (t % 2))) & 15) * 17.0f / 255.0f;
-      return;
-    case TextureFormat::Bc3:
-    case TextureFormat::Dxt5nm:
-      decodeColour(in + 8, false, texels);
-      decodeChannel(in, texels, 3);
-      return;
-    case TextureFormat::Bc4:
-      decodeChannel(in, texels, 0);
-      for (int t = 0; t < 16; ++t) {
-        texels[t][1] = texels[t][2] = 0.0f;
-        texels[t][3] = 1.0f;
-      }
-      return;
-    case TextureFormat::Bc5:
-      decodeChannel(in, texels, 0);
-      decodeChannel(in + 8, texels, 1);
-      for (int t = 0; t < 16; ++t) {
-        texels[t][2] = 0.0f;
-        texels[t][3] = 1.0f;
-      }
-      return;
-    case TextureFormat::Bc7: {
-      std::uint8_t rgba[16][4];
-      decodeBc7Block(in, rgba);
-      for (int t = 0; t < 16; ++t) {
-        for (int ch = 0; ch < 4; ++ch)
-          texels[t][ch] = float(rgba[t][ch]) / 255.0f;
-      }
-      return;
+  if (format == TextureFormat::Bc1) {
+    decodeColour(in, true, texels);
+  } else if (format == TextureFormat::Bc2) {
+    decodeColour(in + 8, false, texels);
+    for (int t = 0; t < 16; ++t)
+      texels[t][3] = float((in[t / 2] >> (4 * (t % 2))) & 15) * 17.0f / 255.0f;
+  } else if (format == TextureFormat::Bc3 || format == TextureFormat::Dxt5nm) {
+    decodeColour(in + 8, false, texels);
+    decodeChannel(in, texels, 3);
+  } else if (format == TextureFormat::Bc4) {
+    decodeChannel(in, texels, 0);
+    for (int t = 0; t < 16; ++t) {
+      texels[t][1] = texels[t][2] = 0.0f;
+      texels[t][3] = 1.0f;
     }
-    // Other families are dispatched to their own codecs (Compressor.cpp) and never reach here.
-    case TextureFormat::Etc1:
-    case TextureFormat::Etc2:
-    case TextureFormat::Etc2A:
-    case TextureFormat::EacR11:
-    case TextureFormat::EacRg11:
-    case TextureFormat::Astc4x4:
-    case TextureFormat::Astc5x5:
-    case TextureFormat::Astc6x6:
-    case TextureFormat::Astc8x8:
-    case TextureFormat::Astc4x4Normal:
-    case TextureFormat::Astc5x5Normal:
-    case TextureFormat::Astc6x6Normal:
-    case TextureFormat::Astc8x8Normal:
-      return;
+  } else if (format == TextureFormat::Bc5) {
+    decodeChannel(in, texels, 0);
+    decodeChannel(in + 8, texels, 1);
+    for (int t = 0; t < 16; ++t) {
+      texels[t][2] = 0.0f;
+      texels[t][3] = 1.0f;
+    }
+  } else if (format == TextureFormat::Bc7) {
+    std::uint8_t rgba[16][4];
+    decodeBc7Block(in, rgba);
+    for (int t = 0; t < 16; ++t) {
+      for (int ch = 0; ch < 4; ++ch)
+        texels[t][ch] = float(rgba[t][ch]) / 255.0f;
+    }
+  } else {
+    throwNotOfFamily("decodeBcBlock", format);
   }
+}
+
+void throwNotOfFamily(const char* codec, TextureFormat format) {
+  throw std::logic_error(std::string(codec) + ": " + std::string(textureFormatInfo(format).name) +
+                         " is not a format this codec knows");
 }
 
 }  // namespace relief::core::inline compression

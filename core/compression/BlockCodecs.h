@@ -12,6 +12,13 @@ namespace relief::core::inline compression {
 
 using BlockTexels = float[16][4];
 
+// Each family's codec is given only its own family's formats (Compressor.cpp dispatches on the
+// table's family), so a codec tells its formats apart with ifs instead of a switch listing
+// every other family's, and a format it does not know is a bug it reports with this: a new
+// format of its family that it was not taught fails its first encode or decode (the tests
+// round-trip every row of the table).
+[[noreturn]] void throwNotOfFamily(const char* codec, TextureFormat format);
+
 // BC1-BC5, DXT5nm and BC7: our own encoders and decoders. BC1's colour (also the colour half of
 // BC2, BC3 and DXT5nm) is Bc1Encoder.cpp, in place of libsquish's cluster fit, which is ten
 // times slower for the same quality (tools/bench-compress keeps libsquish as the reference

@@ -366,42 +366,19 @@ void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const Bloc
       values[t] = texels[t][ch];
   };
   float values[16];
-  switch (format) {
-    case TextureFormat::EacR11:
-      channel(0, values);
-      encodeEacChannel(values, validMask, true, quality, out);
-      return;
-    case TextureFormat::EacRg11:
-      channel(0, values);
-      encodeEacChannel(values, validMask, true, quality, out);
-      channel(1, values);
-      encodeEacChannel(values, validMask, true, quality, out + 8);
-      return;
-    case TextureFormat::Etc2A:
-      channel(3, values);
-      encodeEacChannel(values, validMask, false, quality, out);
-      out += 8;
-      break;
-    case TextureFormat::Etc1:
-    case TextureFormat::Etc2:
-      break;
-    // Other families are dispatched to their own codecs (Compressor.cpp) and never reach here.
-    case TextureFormat::Bc1:
-    case TextureFormat::Bc2:
-    case TextureFormat::Bc3:
-    case TextureFormat::Bc4:
-    case TextureFormat::Bc5:
-    case TextureFormat::Dxt5nm:
-    case TextureFormat::Bc7:
-    case TextureFormat::Astc4x4:
-    case TextureFormat::Astc5x5:
-    case TextureFormat::Astc6x6:
-    case TextureFormat::Astc8x8:
-    case TextureFormat::Astc4x4Normal:
-    case TextureFormat::Astc5x5Normal:
-    case TextureFormat::Astc6x6Normal:
-    case TextureFormat::Astc8x8Normal:
-      return;
+  if (format == TextureFormat::EacR11 || format == TextureFormat::EacRg11) {
+    for (int ch = 0; ch < (format == TextureFormat::EacRg11 ? 2 : 1); ++ch) {
+      channel(ch, values);
+      encodeEacChannel(values, validMask, true, quality, out + 8 * ch);
+    }
+    return;
+  }
+  if (format == TextureFormat::Etc2A) {
+    channel(3, values);
+    encodeEacChannel(values, validMask, false, quality, out);
+    out += 8;
+  } else if (format != TextureFormat::Etc1 && format != TextureFormat::Etc2) {
+    throwNotOfFamily("encodeEtcBlock", format);
   }
   // ETC1 colour (android-libetc1 searches every mode it has; it has one quality).
   etc1_byte rgb[16 * 3];
@@ -448,59 +425,33 @@ void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const Bloc
 void decodeEtcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& texels) {
   float values[16];
   float rgb[16][3];
-  switch (format) {
-    case TextureFormat::EacR11:
-      decodeEacChannel(in, true, values);
-      for (int t = 0; t < 16; ++t) {
-        texels[t][0] = values[t];
-        texels[t][1] = texels[t][2] = 0.0f;
-        texels[t][3] = 1.0f;
-      }
-      return;
-    case TextureFormat::EacRg11:
-      decodeEacChannel(in, true, values);
+  if (format == TextureFormat::EacR11 || format == TextureFormat::EacRg11) {
+    const int channels = format == TextureFormat::EacRg11 ? 2 : 1;
+    for (int ch = 0; ch < channels; ++ch) {
+      decodeEacChannel(in + 8 * ch, true, values);
       for (int t = 0; t < 16; ++t)
-        texels[t][0] = values[t];
-      decodeEacChannel(in + 8, true, values);
-      for (int t = 0; t < 16; ++t) {
-        texels[t][1] = values[t];
-        texels[t][2] = 0.0f;
-        texels[t][3] = 1.0f;
-      }
-      return;
-    case TextureFormat::Etc2A:
-      decodeEacChannel(in, false, values);
-      decodeEtc2Rgb(in + 8, rgb);
-      for (int t = 0; t < 16; ++t) {
-        std::copy(rgb[t], rgb[t] + 3, texels[t]);
-        texels[t][3] = values[t];
-      }
-      return;
-    case TextureFormat::Etc1:
-    case TextureFormat::Etc2:
-      decodeEtc2Rgb(in, rgb);
-      for (int t = 0; t < 16; ++t) {
-        std::copy(rgb[t], rgb[t] + 3, texels[t]);
-        texels[t][3] = 1.0f;
-      }
-      return;
-    // Other families are dispatched to their own codecs (Compressor.cpp) and never reach here.
-    case TextureFormat::Bc1:
-    case TextureFormat::Bc2:
-    case TextureFormat::Bc3:
-    case TextureFormat::Bc4:
-    case TextureFormat::Bc5:
-    case TextureFormat::Dxt5nm:
-    case TextureFormat::Bc7:
-    case TextureFormat::Astc4x4:
-    case TextureFormat::Astc5x5:
-    case TextureFormat::Astc6x6:
-    case TextureFormat::Astc8x8:
-    case TextureFormat::Astc4x4Normal:
-    case TextureFormat::Astc5x5Normal:
-    case TextureFormat::Astc6x6Normal:
-    case TextureFormat::Astc8x8Normal:
-      return;
+        texels[t][ch] = values[t];
+    }
+    for (int t = 0; t < 16; ++t) {
+      for (int ch = channels; ch < 3; ++ch)
+        texels[t][ch] = 0.0f;
+      texels[t][3] = 1.0f;
+    }
+  } else if (format == TextureFormat::Etc2A) {
+    decodeEacChannel(in, false, values);
+    decodeEtc2Rgb(in + 8, rgb);
+    for (int t = 0; t < 16; ++t) {
+      std::copy(rgb[t], rgb[t] + 3, texels[t]);
+      texels[t][3] = values[t];
+    }
+  } else if (format == TextureFormat::Etc1 || format == TextureFormat::Etc2) {
+    decodeEtc2Rgb(in, rgb);
+    for (int t = 0; t < 16; ++t) {
+      std::copy(rgb[t], rgb[t] + 3, texels[t]);
+      texels[t][3] = 1.0f;
+    }
+  } else {
+    throwNotOfFamily("decodeEtcBlock", format);
   }
 }
 

@@ -26,9 +26,8 @@ constexpr std::array<std::uint8_t, 12> kIdentifier = {0xAB, 'K',  'T',  'X',  ' 
                                                       '0',  0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
 constexpr std::size_t kHeaderEnd = 12 + 9 * 4 + 4 * 4 + 2 * 8;  // identifier, header, index
 
-// Khronos Data Format colour models, channel ids and transfer functions.
-constexpr std::uint32_t kModelBc1 = 128, kModelBc2 = 129, kModelBc3 = 130, kModelBc4 = 131,
-                        kModelBc5 = 132, kModelBc7 = 134, kModelEtc2 = 161, kModelAstc = 162;
+// Khronos Data Format channel ids and transfer functions (the colour models are in the format
+// table, TextureFormat.cpp).
 constexpr std::uint32_t kChannelColorBc = 0, kChannelRed = 0, kChannelGreen = 1,
                         kChannelEtc2Color = 2, kChannelAlpha = 15;
 constexpr std::uint32_t kPrimariesBt709 = 1, kTransferLinear = 1, kTransferSrgb = 2;
@@ -62,84 +61,34 @@ struct Sample {
   std::uint32_t bitOffset;
 };
 
-std::uint32_t colourModel(TextureFormat format) {
-  switch (format) {
-    case TextureFormat::Bc1:
-      return kModelBc1;
-    case TextureFormat::Bc2:
-      return kModelBc2;
-    case TextureFormat::Bc3:
-    case TextureFormat::Dxt5nm:
-      return kModelBc3;
-    case TextureFormat::Bc4:
-      return kModelBc4;
-    case TextureFormat::Bc5:
-      return kModelBc5;
-    case TextureFormat::Bc7:
-      return kModelBc7;
-    case TextureFormat::Astc4x4:
-    case TextureFormat::Astc5x5:
-    case TextureFormat::Astc6x6:
-    case TextureFormat::Astc8x8:
-    case TextureFormat::Astc4x4Normal:
-    case TextureFormat::Astc5x5Normal:
-    case TextureFormat::Astc6x6Normal:
-    case TextureFormat::Astc8x8Normal:
-      return kModelAstc;
-    case TextureFormat::Etc1:
-    case TextureFormat::Etc2:
-    case TextureFormat::Etc2A:
-    case TextureFormat::EacR11:
-    case TextureFormat::EacRg11:
-      return kModelEtc2;
-  }
-  return kModelEtc2;  // not reached: every format is handled above
-}
-
-std::vector<Sample> samples(TextureFormat format) {
-  switch (format) {
-    case TextureFormat::Bc2:
-    case TextureFormat::Bc3:
-    case TextureFormat::Dxt5nm:
-      return {{kChannelAlpha, 0}, {kChannelColorBc, 64}};
-    case TextureFormat::Bc5:
-    case TextureFormat::EacRg11:
-      return {{kChannelRed, 0}, {kChannelGreen, 64}};
-    case TextureFormat::Etc1:
-    case TextureFormat::Etc2:
+std::vector<Sample> samples(Ktx2Samples layout) {
+  switch (layout) {
+    case Ktx2Samples::Whole:
+      return {{kChannelColorBc, 0}};  // channel 0: BC colour, red, or ASTC's data
+    case Ktx2Samples::EtcColour:
       return {{kChannelEtc2Color, 0}};
-    case TextureFormat::Etc2A:
+    case Ktx2Samples::AlphaThenColour:
+      return {{kChannelAlpha, 0}, {kChannelColorBc, 64}};
+    case Ktx2Samples::RedThenGreen:
+      return {{kChannelRed, 0}, {kChannelGreen, 64}};
+    case Ktx2Samples::AlphaThenEtcColour:
       return {{kChannelAlpha, 0}, {kChannelEtc2Color, 64}};
-    // One sample over the block: colour (BC1, BC7), red (BC4, EAC R11), ASTC's data.
-    case TextureFormat::Bc1:
-    case TextureFormat::Bc7:
-    case TextureFormat::Bc4:
-    case TextureFormat::EacR11:
-    case TextureFormat::Astc4x4:
-    case TextureFormat::Astc5x5:
-    case TextureFormat::Astc6x6:
-    case TextureFormat::Astc8x8:
-    case TextureFormat::Astc4x4Normal:
-    case TextureFormat::Astc5x5Normal:
-    case TextureFormat::Astc6x6Normal:
-    case TextureFormat::Astc8x8Normal:
-      return {{0, 0}};
   }
-  return {{0, 0}};  // not reached: every format is handled above
+  return {{0, 0}};  // not reached: every layout is handled above
 }
 
 std::vector<std::uint8_t> dataFormatDescriptor(const CompressedTexture& texture) {
   const TextureFormatInfo& info = textureFormatInfo(texture.format);
-  const std::vector<Sample> blockSamples = samples(texture.format);
-  // One sample spans a whole 128-bit ASTC or BC7 block; the others pair 64-bit halves.
+  const std::vector<Sample> blockSamples = samples(info.ktx2Samples);
+  // The samples share the block: one spans it, two pair its 64-bit halves.
   const std::uint32_t sampleBits =
-      isAstc(texture.format) || texture.format == TextureFormat::Bc7 ? 128 : 64;
+      std::uint32_t(info.bytesPerBlock) * 8 / std::uint32_t(blockSamples.size());
   const std::uint32_t blockSize = 24 + 16 * std::uint32_t(blockSamples.size());
   ByteWriter out;
   out.u32(4 + blockSize);        // dfdTotalSize
   out.u32(0);                    // vendorId 0 (Khronos), descriptorType 0 (basic)
   out.u32(2 | blockSize << 16);  // versionNumber 2, descriptorBlockSize
-  out.u32(colourModel(texture.format) | kPrimariesBt709 << 8 |
+  out.u32(info.ktx2ColourModel | kPrimariesBt709 << 8 |
           (texture.srgb ? kTransferSrgb : kTransferLinear) << 16);  // flags 0: straight alpha
   out.u32(std::uint32_t(info.blockWidth - 1) | std::uint32_t(info.blockHeight - 1) << 8);
   out.u32(std::uint32_t(info.bytesPerBlock));  // bytesPlane0

@@ -59,6 +59,12 @@ enum class FormatFamily { Bc, Etc, Astc };
 // extension or version check (renderer/CompressedUpload.cpp).
 enum class GpuFeature { S3tc, Rgtc, Bptc, Etc2Eac, AstcLdr };
 
+// How KTX2's data format descriptor lists a format's block (Khronos Data Format 1.3, 5.6 and
+// ch. 15-17): one sample over the whole block on channel 0 (BC1, BC4, BC7, EAC R11, ASTC) or on
+// ETC's colour channel (ETC1, ETC2 RGB), or two 64-bit halves: alpha then BC colour (BC2, BC3,
+// DXT5nm), red then green (BC5, EAC RG11), alpha then ETC colour (ETC2 RGBA).
+enum class Ktx2Samples { Whole, EtcColour, AlphaThenColour, RedThenGreen, AlphaThenEtcColour };
+
 struct TextureFormatInfo {
   TextureFormat format;
   std::string_view name;   // "bc1", as the CLI and presets spell it
@@ -82,6 +88,9 @@ struct TextureFormatInfo {
   // OpenGL internal formats (sRGB 0 when none).
   std::uint32_t glFormat;
   std::uint32_t glSrgbFormat;
+  // KTX2's colour model (KHR_DF_MODEL_BC1A 128 ... BC7 134, ETC2 161, ASTC 162) and samples.
+  std::uint32_t ktx2ColourModel;
+  Ktx2Samples ktx2Samples;
 };
 
 // A compression choice: what a map is compressed into. Presets store one per map slot (parsed
