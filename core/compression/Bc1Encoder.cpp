@@ -300,12 +300,36 @@ void clusterSearch(const Source& source, const int sorted[16], int levels, int r
   }
   int boundary[3] = {counts[0], counts[0] + counts[1], counts[0] + counts[1] + counts[2]};
   const float steps = float(levels - 1);
+  // The least-squares moments of a split (texel runs ending at `ends`): texel = v e0 + w e1
+  // with w = level / steps, summed over the runs.
+  struct Moments {
+    float aa = 0, ab = 0, bb = 0, ax[3] = {}, bx[3] = {};
+    float determinant() const { return aa * bb - ab * ab; }
+  };
+  const auto momentsOf = [&](const int ends[4]) {
+    Moments m;
+    int begin = 0;
+    for (int l = 0; l < levels; ++l) {
+      const int end = ends[l];
+      const float count = float(end - begin);
+      const float w = float(l) / steps, v = 1.0f - w;
+      m.aa += count * v * v;
+      m.ab += count * v * w;
+      m.bb += count * w * w;
+      for (int c = 0; c < 3; ++c) {
+        const float sum = prefix[end][c] - prefix[begin][c];
+        m.ax[c] += v * sum;
+        m.bx[c] += w * sum;
+      }
+      begin = end;
+    }
+    return m;
+  };
   struct Split {
     float error;
-    float e0[3], e1[3];
+    int ends[4];
   };
-  Split top[2] = {{std::numeric_limits<float>::max(), {}, {}},
-                  {std::numeric_limits<float>::max(), {}, {}}};
+  Split top[2] = {{std::numeric_limits<float>::max(), {}}, {std::numeric_limits<float>::max(), {}}};
   const int splits = levels - 1;
   int lo[3], hi[3];
   for (int s = 0; s < 3; ++s) {
@@ -315,53 +339,40 @@ void clusterSearch(const Source& source, const int sorted[16], int levels, int r
   for (int b0 = lo[0]; b0 <= hi[0]; ++b0) {
     for (int b1 = std::max(lo[1], b0); b1 <= hi[1]; ++b1) {
       for (int b2 = std::max(lo[2], b1); b2 <= hi[2]; ++b2) {
-        const int ends[4] = {b0, splits >= 2 ? b1 : n, splits >= 3 ? b2 : n, n};
-        float aa = 0, ab = 0, bb = 0, ax[3] = {}, bx[3] = {};
-        int begin = 0;
-        for (int l = 0; l < levels; ++l) {
-          const int end = ends[l];
-          const float count = float(end - begin);
-          const float w = float(l) / steps, v = 1.0f - w;
-          aa += count * v * v;
-          ab += count * v * w;
-          bb += count * w * w;
-          for (int c = 0; c < 3; ++c) {
-            const float sum = prefix[end][c] - prefix[begin][c];
-            ax[c] += v * sum;
-            bx[c] += w * sum;
-          }
-          begin = end;
-        }
-        const float determinant = aa * bb - ab * ab;
+        const Split candidate{0.0f, {b0, splits >= 2 ? b1 : n, splits >= 3 ? b2 : n, n}};
+        const Moments m = momentsOf(candidate.ends);
+        const float determinant = m.determinant();
         if (std::abs(determinant) < 1e-6f)
           continue;
         // At the least-squares optimum the error is sum x^2 - [ax bx] M^-1 [ax bx]^T per
         // channel; the endpoints themselves are solved only for the two best splits.
-        Split split;
-        split.error = squares;
+        float error = squares;
         const float inverse = 1.0f / determinant;
         for (int c = 0; c < 3; ++c) {
-          split.error -= source.weight[c] * inverse *
-                         (bb * ax[c] * ax[c] - 2.0f * ab * ax[c] * bx[c] + aa * bx[c] * bx[c]);
-          split.e0[c] = (bb * ax[c] - ab * bx[c]) * inverse;
-          split.e1[c] = (aa * bx[c] - ab * ax[c]) * inverse;
+          error -= source.weight[c] * inverse *
+                   (m.bb * m.ax[c] * m.ax[c] - 2.0f * m.ab * m.ax[c] * m.bx[c] +
+                    m.aa * m.bx[c] * m.bx[c]);
         }
-        if (split.error < top[1].error) {
-          top[1] = split;
+        if (error < top[1].error) {
+          top[1] = candidate;
+          top[1].error = error;
           if (top[1].error < top[0].error)
             std::swap(top[0], top[1]);
         }
       }
     }
   }
-  for (Split& split : top) {
+  for (const Split& split : top) {
     if (split.error == std::numeric_limits<float>::max())
       continue;
+    const Moments m = momentsOf(split.ends);
+    const float inverse = 1.0f / m.determinant();
+    float e0[3], e1[3];
     for (int c = 0; c < 3; ++c) {
-      split.e0[c] = std::clamp(split.e0[c], 0.0f, 255.0f);
-      split.e1[c] = std::clamp(split.e1[c], 0.0f, 255.0f);
+      e0[c] = std::clamp((m.bb * m.ax[c] - m.ab * m.bx[c]) * inverse, 0.0f, 255.0f);
+      e1[c] = std::clamp((m.aa * m.bx[c] - m.ab * m.ax[c]) * inverse, 0.0f, 255.0f);
     }
-    evaluate(source, quantise(split.e0), quantise(split.e1), levels == 4, best);
+    evaluate(source, quantise(e0), quantise(e1), levels == 4, best);
   }
 }
 
