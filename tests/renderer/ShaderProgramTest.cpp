@@ -17,15 +17,32 @@ namespace {
 
 class ShaderProgramWithDriver : public OffscreenTest {};
 
+// The fixture's renderer proves a context can be made; these tests need their own current one.
+class CurrentContext {
+ public:
+  CurrentContext() {
+    m_context.setFormat(renderer::requiredSurfaceFormat());
+    if (!m_context.create())
+      return;
+    m_surface.setFormat(m_context.format());
+    m_surface.create();
+    m_made = m_context.makeCurrent(&m_surface);
+  }
+  ~CurrentContext() {
+    if (m_made)
+      m_context.doneCurrent();
+  }
+  bool made() const { return m_made; }
+
+ private:
+  QOpenGLContext m_context;
+  QOffscreenSurface m_surface;
+  bool m_made = false;
+};
+
 TEST_F(ShaderProgramWithDriver, ErrorsPointAtTheIncludedFileAndLine) {
-  // The fixture's renderer proves a context can be made; this test needs its own current one.
-  QOpenGLContext context;
-  context.setFormat(renderer::requiredSurfaceFormat());
-  ASSERT_TRUE(context.create());
-  QOffscreenSurface surface;
-  surface.setFormat(context.format());
-  surface.create();
-  ASSERT_TRUE(context.makeCurrent(&surface));
+  CurrentContext current;
+  ASSERT_TRUE(current.made());
 
   std::map<std::string, std::string> files = {
       {"ok.vert", "void main() { gl_Position = vec4(0.0); }\n"},
@@ -51,7 +68,6 @@ TEST_F(ShaderProgramWithDriver, ErrorsPointAtTheIncludedFileAndLine) {
   EXPECT_TRUE(program.isValid());
   EXPECT_EQ(&program.program(), good);
   program.release();
-  context.doneCurrent();
 }
 
 // The samplers and presence flags are declared from core/material/MapSlot.cpp's rows
@@ -59,13 +75,8 @@ TEST_F(ShaderProgramWithDriver, ErrorsPointAtTheIncludedFileAndLine) {
 // leave the map unbound without an error from GL. An active uniform is one the linked program
 // reads, so each slot's sampler and flag must have a location.
 TEST_F(ShaderProgramWithDriver, TheMaterialProgramReadsEveryMapSlotsSamplerAndFlag) {
-  QOpenGLContext context;
-  context.setFormat(renderer::requiredSurfaceFormat());
-  ASSERT_TRUE(context.create());
-  QOffscreenSurface surface;
-  surface.setFormat(context.format());
-  surface.create();
-  ASSERT_TRUE(context.makeCurrent(&surface));
+  CurrentContext current;
+  ASSERT_TRUE(current.made());
 
   core::Material material;  // pbr reads every slot (classic ignores metallic)
   material.setParameter(core::ParamId::Shading, double(int(core::ShadingModel::Pbr)));
@@ -87,7 +98,6 @@ TEST_F(ShaderProgramWithDriver, TheMaterialProgramReadsEveryMapSlotsSamplerAndFl
     }
   }
   program.release();
-  context.doneCurrent();
 }
 
 }  // namespace
