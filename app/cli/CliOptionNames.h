@@ -9,6 +9,7 @@
 namespace relief::cli::option {
 
 inline const QString kBackground = QStringLiteral("background");
+inline const QString kCheck = QStringLiteral("check");
 inline const QString kDistance = QStringLiteral("distance");
 inline const QString kEnvironment = QStringLiteral("environment");
 inline const QString kEnvironmentIntensity = QStringLiteral("environment-intensity");

@@ -4,6 +4,7 @@
 #include "app/cli/CliOptionNames.h"
 
 #include "CliCommon.h"
+#include "MapCheckCommand.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
 #include "core/material/MapSlot.h"
@@ -48,11 +49,14 @@ QString readAsText(core::MapSlot slot) {
 }  // namespace
 
 int runInfo(const QStringList& arguments) {
+  if (arguments.contains(QStringLiteral("--") + option::kCheck))
+    return runMapCheck(arguments);
   QCommandLineParser parser;
   parser.setApplicationDescription(
       QStringLiteral("Print an image's size, channels, bit depth and colour space, after "
                      "checking that all of its pixel data decodes, and how Relief reads it in "
-                     "each map slot."));
+                     "each map slot. With --check, whether a material's normal and height maps "
+                     "agree (info --check --help)."));
   parser.addPositionalArgument(QStringLiteral("image"), QStringLiteral("The image file."));
   addOptions(parser, {jsonOption()});
   if (auto exit =

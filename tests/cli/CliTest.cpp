@@ -136,6 +136,48 @@ TEST(Cli, InfoRefusesBadFilesClearly) {
   }
 }
 
+// info --check (core/generators/MapCheck.h, tests/core/MapCheckTest.cpp): the sample's maps
+// agree; its normal map with green inverted (as a DirectX exporter writes it) is found out, with
+// exit 1 and the evidence; a one-channel "normal" map and a missing map are refused by name.
+TEST(Cli, InfoCheckFindsADirectXNormalMap) {
+  CliRun agree = runCli({QStringLiteral("info"), QStringLiteral("--check"),
+                         q(sourcePath("samples/bricks/bricks.relief"))});
+  EXPECT_EQ(agree.exitCode, 0) << agree.err << agree.out;
+  EXPECT_NE(agree.out.find("the maps agree"), std::string::npos) << agree.out;
+
+  const std::string height = sourcePath("samples/bricks/bricks_height.png");
+  core::Image normal = core::loadImage(sourcePath("samples/bricks/bricks_normal.png")).value();
+  for (int y = 0; y < normal.height(); ++y) {
+    for (int x = 0; x < normal.width(); ++x)
+      normal.at(x, y, 1) = 1.0f - normal.at(x, y, 1);
+  }
+  const std::string flipped = scratchFolder() + "/wall_dx.png";
+  ASSERT_TRUE(core::saveImage(normal, flipped, core::SampleFormat::UInt8).ok());
+  CliRun found =
+      runCli({QStringLiteral("info"), QStringLiteral("--check"), QStringLiteral("--normal"),
+              q(flipped), QStringLiteral("--height"), q(height), QStringLiteral("--json")});
+  EXPECT_EQ(found.exitCode, 1) << found.err;
+  const QJsonObject object = QJsonDocument::fromJson(QByteArray::fromStdString(found.out)).object();
+  EXPECT_EQ(object.value(QStringLiteral("convention")).toString(), QStringLiteral("directx"));
+  EXPECT_FALSE(object.value(QStringLiteral("ok")).toBool(true));
+  EXPECT_LT(object.value(QStringLiteral("correlationY")).toDouble(), -0.9);
+  const QJsonArray findings = object.value(QStringLiteral("findings")).toArray();
+  ASSERT_EQ(findings.size(), 1);
+  EXPECT_TRUE(findings[0].toString().startsWith(QStringLiteral("wall_dx.png is a DirectX")))
+      << findings[0].toString().toStdString();
+
+  CliRun grey = runCli(
+      {QStringLiteral("info"), QStringLiteral("--check"), QStringLiteral("--normal"), q(height)});
+  EXPECT_EQ(grey.exitCode, 1);
+  EXPECT_NE(grey.err.find("bricks_height.png: the normal map has 1 channel"), std::string::npos)
+      << grey.err;
+  CliRun missing = runCli({QStringLiteral("info"), QStringLiteral("--check"),
+                           QStringLiteral("--normal"), q(scratchFolder() + "/absent.png")});
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("absent.png"), std::string::npos) << missing.err;
+  EXPECT_EQ(runCli({QStringLiteral("info"), QStringLiteral("--check")}).exitCode, 2);
+}
+
 TEST(Cli, RenderRefusesBadMapsClearly) {
   const std::string out = scratchFolder() + "/never.png";
   for (const auto& [file, problem] : badImageFiles()) {
