@@ -4,6 +4,7 @@
 #include "renderer/ImageConversion.h"
 #include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
+#include "ui/panels/MapCheckBanner.h"
 
 #include <QFileInfo>
 #include <QGridLayout>
@@ -16,6 +17,7 @@ namespace relief::ui::inline panels {
 MapsPanel::MapsPanel(MaterialDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
   auto* outer = new QVBoxLayout(this);
+  outer->addWidget(new MapCheckBanner(document, this));
   auto* grid = new QGridLayout;
   outer->addLayout(grid);
   outer->addStretch(1);
@@ -59,7 +61,7 @@ MapsPanel::MapsPanel(MaterialDocument* document, QWidget* parent)
          "metallic (B), as glTF and Unreal do, into those three slots. Files named "
          "*_orm or *_arm are split so when opened or dropped."));
   connect(orm, &QToolButton::clicked, this, &MapsPanel::loadOrmRequested);
-  outer->insertWidget(1, orm, 0, Qt::AlignRight);
+  outer->insertWidget(2, orm, 0, Qt::AlignRight);
   connect(document, &MaterialDocument::mapChanged, this, &MapsPanel::showSlot);
   connect(document, &MaterialDocument::materialReset, this, &MapsPanel::showAll);
   showAll();
