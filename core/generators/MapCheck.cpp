@@ -15,11 +15,11 @@ namespace {
 // The slopes (p, q) = (-nx / nz, -ny / nz) a normal map encodes, y as stored (up for OpenGL).
 struct Slopes {
   int width = 0, height = 0;
-  std::vector<double> p, q;
-  double at(const std::vector<double>& field, int x, int y) const {
+  std::vector<float> pq;  // p, q per texel, interleaved as the height gradient's dx, dy
+  double at(int component, int x, int y) const {
     x = (x + width) % width;  // wrap: the maps of a material tile
     y = (y + height) % height;
-    return field[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    return pq[2 * (std::size_t(y) * std::size_t(width) + std::size_t(x)) + std::size_t(component)];
   }
 };
 
@@ -28,8 +28,7 @@ Slopes slopesOf(const Image& normal) {
   slopes.width = normal.width();
   slopes.height = normal.height();
   const std::size_t count = normal.pixelCount();
-  slopes.p.resize(count);
-  slopes.q.resize(count);
+  slopes.pq.resize(2 * count);
   // A map stored in two channels (BC5, EAC RG11) loads with an empty blue: Z is rebuilt, as the
   // shader does, when blue says the normals point into the surface on average.
   double blue = 0.0;
@@ -43,24 +42,25 @@ Slopes slopesOf(const Image& normal) {
     const double nx = 2.0 * texel[0] - 1.0, ny = 2.0 * texel[1] - 1.0;
     double nz = rebuildZ ? std::sqrt(std::max(0.0, 1.0 - nx * nx - ny * ny)) : 2.0 * texel[2] - 1.0;
     nz = std::max(nz, 0.05);  // a slope past 87 degrees says nothing more
-    slopes.p[i] = -nx / nz;
-    slopes.q[i] = -ny / nz;
+    slopes.pq[2 * i] = float(-nx / nz);
+    slopes.pq[2 * i + 1] = float(-ny / nz);
   }
   return slopes;
 }
 
-// Pearson's correlation of two fields; 0 when either is constant.
-double correlation(const std::vector<double>& a, const std::vector<double>& b) {
-  const double n = double(a.size());
+// Pearson's correlation of one component of two fields of two floats per texel; 0 when either
+// is constant.
+double correlation(const float* a, const float* b, std::size_t count, int component) {
+  const double n = double(count);
   double meanA = 0.0, meanB = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
+  for (std::size_t i = std::size_t(component); i < 2 * count; i += 2) {
     meanA += a[i];
     meanB += b[i];
   }
   meanA /= n;
   meanB /= n;
   double ab = 0.0, aa = 0.0, bb = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
+  for (std::size_t i = std::size_t(component); i < 2 * count; i += 2) {
     const double da = a[i] - meanA, db = b[i] - meanB;
     ab += da * db;
     aa += da * da;
@@ -108,8 +108,8 @@ Result<MapCheckResult> checkMaps(const Image& normal, const Image* height) {
   double curl = 0.0, flipped = 0.0;
   for (int y = 0; y < slopes.height; ++y) {
     for (int x = 0; x < slopes.width; ++x) {
-      const double pY = 0.5 * (slopes.at(slopes.p, x, y - 1) - slopes.at(slopes.p, x, y + 1));
-      const double qX = 0.5 * (slopes.at(slopes.q, x + 1, y) - slopes.at(slopes.q, x - 1, y));
+      const double pY = 0.5 * (slopes.at(0, x, y - 1) - slopes.at(0, x, y + 1));
+      const double qX = 0.5 * (slopes.at(1, x + 1, y) - slopes.at(1, x - 1, y));
       curl += (pY - qX) * (pY - qX);
       flipped += (pY + qX) * (pY + qX);
     }
@@ -129,13 +129,11 @@ Result<MapCheckResult> checkMaps(const Image& normal, const Image* height) {
     return result;
 
   const Image gradient = heightGradient(*height, GradientKernel::Sobel, EdgeMode::Wrap);
-  std::vector<double> gx(slopes.p.size()), gy(slopes.p.size());
-  for (std::size_t i = 0; i < gx.size(); ++i) {
-    gx[i] = gradient.data()[2 * i];
-    gy[i] = gradient.data()[2 * i + 1];
-  }
-  result.correlationX = correlation(slopes.p, gx);
-  result.correlationY = correlation(slopes.q, gy);
+  const float* g = gradient.data();  // dh/dx, dh/dy (y up) per texel
+  const float* pq = slopes.pq.data();
+  const std::size_t count = normal.pixelCount();
+  result.correlationX = correlation(pq, g, count, 0);
+  result.correlationY = correlation(pq, g, count, 1);
   int signX = evidence(*result.correlationX), signY = evidence(*result.correlationY);
   result.pairMatches = std::max(std::abs(*result.correlationX), std::abs(*result.correlationY)) >=
                        kMapCheckThreshold;
@@ -153,9 +151,10 @@ Result<MapCheckResult> checkMaps(const Image& normal, const Image* height) {
   // The strength that would rebuild the normal map from the height map, signs as found.
   double along = 0.0, squares = 0.0;
   const double sx = signX < 0 ? -1.0 : 1.0, sy = signY < 0 ? -1.0 : 1.0;
-  for (std::size_t i = 0; i < gx.size(); ++i) {
-    along += sx * slopes.p[i] * gx[i] + sy * slopes.q[i] * gy[i];
-    squares += gx[i] * gx[i] + gy[i] * gy[i];
+  for (std::size_t i = 0; i < count; ++i) {
+    const double gx = g[2 * i], gy = g[2 * i + 1];
+    along += sx * pq[2 * i] * gx + sy * pq[2 * i + 1] * gy;
+    squares += gx * gx + gy * gy;
   }
   if (squares > 0.0 && result.pairMatches)
     result.strength = along / squares;
