@@ -3,6 +3,7 @@
 
 #include "core/generators/AmbientOcclusion.h"
 #include "core/generators/Curvature.h"
+#include "core/generators/Delight.h"
 #include "core/generators/HeightFromColor.h"
 #include "core/generators/HeightFromNormal.h"
 #include "core/generators/NormalFromHeight.h"
@@ -155,10 +156,29 @@ GeneratorInfo packGenerator() {
                   "normal-height: store depth instead of height.")}};
 }
 
+GeneratorInfo delightGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::Delight,
+      "delight",
+      "Remove baked light",
+      "Flattens the light a photograph was taken in (broad gradients, soft shadows) into an "
+      "albedo: the linear luminance blurred over the radius is taken for the light and divided "
+      "out, relative to its mean. Detail smaller than the radius stays.",
+      {{"in", "Colour map (a photograph)", MapSlot::Color}},
+      MapSlot::Color,
+      {numberOption("radius", "Radius", "texels", 2.0, 1024.0, 64.0, 1,
+                    "Light that changes over more than this many texels is removed; keep it "
+                    "larger than the surface's own features (stones, planks)."),
+       numberOption("strength", "Strength", "fraction", 0.0, 1.0, 1.0, 2,
+                    "1 divides the estimated light out entirely; less keeps some of it."),
+       edgeOption(0)}};
+}
+
 // One function per generator, in GeneratorKind order (generatorInfo indexes them by kind).
 std::vector<GeneratorInfo> buildTable() {
   return {normalGenerator(),           heightGenerator(),    heightFromColorGenerator(),
-          ambientOcclusionGenerator(), curvatureGenerator(), packGenerator()};
+          ambientOcclusionGenerator(), curvatureGenerator(), packGenerator(),
+          delightGenerator()};
 }
 
 template <class Enum>
@@ -171,7 +191,7 @@ double numberValue(const GeneratorValues& values, GeneratorKind kind, std::strin
 }
 
 std::string formatted(const char* format, double value) {
-  char buffer[128];
+  char buffer[512];  // the longest message, normalMapWarning's, is about 200 bytes
   std::snprintf(buffer, sizeof(buffer), format, value);
   return buffer;
 }
@@ -379,6 +399,20 @@ Result<GeneratedMap> runGenerator(const GeneratorRequest& given, const WorkContr
     }
     case GeneratorKind::Pack:
       break;  // runPack, above
+    case GeneratorKind::Delight: {
+      DelightOptions options;
+      options.radius = numberValue(values, kind, "radius");
+      options.strength = numberValue(values, kind, "strength");
+      options.edge = edge;
+      options.texelScale = request.texelScale;
+      DelightResult delit = delight(input, options, control);
+      result.image = std::move(delit.albedo);
+      result.notes.push_back(formatted("the baked light ranged from %.2fx", delit.lightLow) +
+                             formatted(" to %.2fx of its mean", delit.lightHigh) +
+                             formatted(" (RMS %.0f%%)", 100.0 * delit.lightRms) +
+                             formatted("; divided out at strength %.2f", options.strength));
+      break;
+    }
   }
   if (control.cancelled())
     return makeError("cancelled");

@@ -26,6 +26,7 @@ enum class GeneratorKind {
   AmbientOcclusion,  // AO from height
   Curvature,         // curvature from height or normal
   Pack,              // channel packing: height into the normal map's alpha, ORM, mask maps
+  Delight,           // a photograph's baked light divided out (albedo)
 };
 
 struct GeneratorInput {
