@@ -20,7 +20,8 @@ const std::array kCommands = {
     CliCommand{"render", "Render a preset or maps offscreen to an image (needs an X display)",
                nullptr},
     CliCommand{"generate",
-               "Make maps from other maps: normal, height, height-from-color, ao, curvature, pack",
+               "Make maps from other maps: normal, height, height-from-color, ao, curvature, pack, "
+               "delight; make a photo and its maps tileable",
                runGenerate},
     CliCommand{"info", "Print an image's size, channels, bit depth and colour space", runInfo},
     CliCommand{"preset", "validate FILE: check a .relief preset; info FILE: print what it holds",

@@ -8,6 +8,7 @@
 
 namespace relief::cli::option {
 
+inline const QString kAlso = QStringLiteral("also");
 inline const QString kBackground = QStringLiteral("background");
 inline const QString kCheck = QStringLiteral("check");
 inline const QString kDistance = QStringLiteral("distance");
@@ -15,6 +16,7 @@ inline const QString kEnvironment = QStringLiteral("environment");
 inline const QString kEnvironmentIntensity = QStringLiteral("environment-intensity");
 inline const QString kEnvironmentRotation = QStringLiteral("environment-rotation");
 inline const QString kExposure = QStringLiteral("exposure");
+inline const QString kFeather = QStringLiteral("feather");
 inline const QString kFormat = QStringLiteral("format");
 inline const QString kHeight = QStringLiteral("height");
 inline const QString kHeightScale = QStringLiteral("height-scale");
@@ -27,16 +29,20 @@ inline const QString kLightPitch = QStringLiteral("light-pitch");
 inline const QString kLightYaw = QStringLiteral("light-yaw");
 inline const QString kMaps = QStringLiteral("maps");
 inline const QString kMesh = QStringLiteral("mesh");
+inline const QString kMethod = QStringLiteral("method");
 inline const QString kMetrics = QStringLiteral("metrics");
 inline const QString kMips = QStringLiteral("mips");
 inline const QString kNormal = QStringLiteral("normal");
 inline const QString kOrm = QStringLiteral("orm");
 inline const QString kOut = QStringLiteral("out");
+inline const QString kOutDir = QStringLiteral("out-dir");
+inline const QString kPatch = QStringLiteral("patch");
 inline const QString kPerceptual = QStringLiteral("perceptual");
 inline const QString kPitch = QStringLiteral("pitch");
 inline const QString kPreset = QStringLiteral("preset");
 inline const QString kQuality = QStringLiteral("quality");
 inline const QString kRaw = QStringLiteral("raw");
+inline const QString kRecut = QStringLiteral("recut");
 inline const QString kSet = QStringLiteral("set");
 inline const QString kShading = QStringLiteral("shading");
 inline const QString kSize = QStringLiteral("size");

@@ -5,6 +5,7 @@
 
 #include "CliCommon.h"
 #include "TerminalProgress.h"
+#include "TileableCommand.h"
 #include "core/compression/MapFile.h"
 #include "core/generators/Generators.h"
 #include "core/image/ImageIO.h"
@@ -24,6 +25,10 @@ QString generatorList() {
   for (const core::GeneratorInfo& info : core::allGenerators()) {
     text += QStringLiteral("  %1%2\n").arg(qstr(info.name), -20).arg(qstr(info.description));
   }
+  text += QStringLiteral("  %1%2\n")
+              .arg(QStringLiteral("tileable"), -20)
+              .arg(QStringLiteral("A photo and the maps aligned with it made to tile "
+                                  "(--out-dir; see its --help)"));
   return text;
 }
 
@@ -301,6 +306,8 @@ int runGenerate(const QStringList& arguments) {
     printOut(usageTop);
     return arguments.size() < 3 ? kExitUsage : kExitOk;
   }
+  if (arguments[2] == QStringLiteral("tileable"))
+    return runTileable(arguments);  // many maps in, many out: not one of the table's generators
   const std::optional<core::GeneratorKind> kind = core::findGenerator(arguments[2].toStdString());
   if (!kind) {
     printError(QStringLiteral("generate: unknown generator '%1'").arg(arguments[2]));

@@ -608,6 +608,57 @@ TEST(Cli, GenerateMakesEveryMapAtFullPrecision) {
   EXPECT_NE(depth.out.find("relief depth"), std::string::npos) << depth.out;
 }
 
+// generate tileable: a crop of a sample set (which no longer tiles) comes out as tiles under the
+// same names, at the inputs' bit depths, with the seams' numbers; an --out-dir that would write
+// over the inputs, and maps of different sizes, are refused with the files named and nothing
+// written.
+TEST(Cli, TileableMakesASetTileUnderItsOwnNames) {
+  const std::string folder = scratchFolder();
+  const auto crop = [&](const std::string& sample, const std::string& name, int size) {
+    core::Result<core::Image> full = core::loadImage(sourcePath(sample));
+    EXPECT_TRUE(full) << full.error();
+    core::Image part(size, size, full->channels(), full->colorSpace());
+    part.setSourceBitsPerChannel(full->sourceBitsPerChannel());
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        for (int c = 0; c < full->channels(); ++c)
+          part.at(x, y, c) = full->at(x + 137, y + 211, c);
+    EXPECT_TRUE(core::saveImage(part, folder + "/" + name));
+    return q(folder + "/" + name);
+  };
+  const QString color = crop("samples/cobblestones/cobblestones_color.png", "stones.png", 320);
+  const QString height = crop("samples/cobblestones/cobblestones_height.png", "stones_h.png", 320);
+  const QString out = q(folder + "/tiles");
+  CliRun run =
+      runCli({"generate", "tileable", "--in", color, "--also", height, "--out-dir", out, "--json"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const QJsonObject report = QJsonDocument::fromJson(QByteArray::fromStdString(run.out)).object();
+  for (const char* axis : {"horizontal", "vertical"}) {
+    const QJsonObject numbers = report.value(QLatin1String(axis)).toObject();
+    EXPECT_FALSE(numbers.value("alreadyTiled").toBool()) << axis;
+    EXPECT_GT(numbers.value("seamBefore").toDouble(), 1.5) << axis;
+    EXPECT_LE(numbers.value("seamAfter").toDouble(), 1.2) << axis;
+  }
+  EXPECT_EQ(readImageBits(folder + "/tiles/stones.png"), 8);
+  EXPECT_EQ(readImageBits(folder + "/tiles/stones_h.png"), 16);
+
+  // Into the inputs' own folder: refused, the inputs untouched.
+  const std::string before = readBytes(color.toStdString());
+  CliRun over = runCli({"generate", "tileable", "--in", color, "--out-dir", q(folder)});
+  EXPECT_EQ(over.exitCode, 2);
+  EXPECT_NE(over.err.find("over itself"), std::string::npos) << over.err;
+  EXPECT_EQ(readBytes(color.toStdString()), before);
+
+  // Maps of different sizes: the message says so and names the files; no folder made.
+  const QString small = crop("samples/cobblestones/cobblestones_height.png", "small.png", 200);
+  CliRun mismatch = runCli(
+      {"generate", "tileable", "--in", color, "--also", small, "--out-dir", q(folder + "/never")});
+  EXPECT_EQ(mismatch.exitCode, 1);
+  EXPECT_NE(mismatch.err.find("differ in size"), std::string::npos) << mismatch.err;
+  EXPECT_NE(mismatch.err.find("small.png"), std::string::npos) << mismatch.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/never"));
+}
+
 // generate pack --layout: the Unity HDRP mask map from an AO and a roughness file, read back
 // texel by texel (16-bit PNG: within half a step); a channel term overrides the layout's.
 TEST(Cli, PackLayoutsPutEachMapInItsChannel) {

@@ -5,21 +5,37 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <string>
 
 namespace relief::test {
 
-std::vector<core::Image> photographCrops(int size) {
+namespace {
+
+std::vector<core::Image> scikitPhotographs(std::initializer_list<const char*> names) {
   std::vector<core::Image> photos;
-  for (const char* name :
-       {"astronaut.png", "coffee.png", "chelsea.png", "rocket.jpg", "motorcycle_left.png"}) {
+  for (const char* name : names) {
     const std::string path = std::string("/usr/lib/python3/dist-packages/skimage/data/") + name;
     core::Result<core::Image> image = core::loadImage(path);
     if (!image) {
       ADD_FAILURE() << image.error() << " (install python3-skimage: tools/install-deps.sh)";
       continue;
     }
-    const core::Image& full = image.value();
+    photos.push_back(std::move(image).value());
+  }
+  return photos;
+}
+
+}  // namespace
+
+std::vector<core::Image> surfacePhotographs() {
+  return scikitPhotographs({"brick.png", "grass.png", "gravel.png"});
+}
+
+std::vector<core::Image> photographCrops(int size) {
+  std::vector<core::Image> photos;
+  for (const core::Image& full : scikitPhotographs(
+           {"astronaut.png", "coffee.png", "chelsea.png", "rocket.jpg", "motorcycle_left.png"})) {
     core::Image crop(size, size, full.channels(), full.colorSpace());
     const int x0 = (full.width() - size) / 2, y0 = (full.height() - size) / 2;
     for (int y = 0; y < size; ++y) {

@@ -14,4 +14,8 @@ namespace relief::test {
 // file and the package to install.
 std::vector<core::Image> photographCrops(int size = 256);
 
+// Three grey photographs of surfaces, whole (512x512): brick, grass and gravel, the textures a
+// tileable material starts from. Failing to load one fails the calling test, as above.
+std::vector<core::Image> surfacePhotographs();
+
 }  // namespace relief::test
