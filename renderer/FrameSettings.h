@@ -21,9 +21,17 @@ struct SplitComparison {
   float dividerFraction = 0.5f;  // 0..1 of the width, from the left
 };
 
+// Looking at a material as a tile: the view's own repeats on top of the material's tiling (not
+// part of the material: nothing is exported or saved), and lines where the map's edges meet.
+struct TilePreview {
+  int repeats = 1;
+  bool seams = false;
+};
+
 struct FrameSettings {
   RenderView view;
   core::DebugView debugView = core::DebugView::Shading;
+  TilePreview tiles;
   FrameOutput output = FrameOutput::Display;
   std::optional<SplitComparison> split;
 };

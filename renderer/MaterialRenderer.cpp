@@ -415,6 +415,10 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
     }
   }
 
+  program.setUniformValue(
+      "uTiling", float(material.parameter(ParamId::Tiling) * std::max(frame.tiles.repeats, 1)));
+  program.setUniformValue("uTileSeams", frame.tiles.seams);
+
   const bool packed = material.parameterFlag(ParamId::HeightInNormalAlpha);
   const core::Image* heightSource = material.image(packed ? MapSlot::Normal : MapSlot::Height);
   program.setUniformValue("uHeightMapSize", heightSource ? QVector2D(float(heightSource->width()),

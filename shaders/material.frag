@@ -148,4 +148,14 @@ void main() {
                             max(uDepthDisplayRange.y - uDepthDisplayRange.x, 1e-6), 0.0, 1.0);
   fragColor = dataOutput(vec3(distanceToEye), vec3(shade));
 #endif
+
+#ifndef FLOAT_OUTPUT
+  // The tile preview's seam lines (renderer/FrameSettings.h): where the map's edges meet on the
+  // mesh surface, about one and a half pixels wide at any distance, amber over any view.
+  if (uTileSeams) {
+    vec2 pixelsToEdge = abs(fract(entryUv + 0.5) - 0.5) / max(fwidth(entryUv), vec2(1e-6));
+    float line = 1.0 - smoothstep(0.75, 1.5, min(pixelsToEdge.x, pixelsToEdge.y));
+    fragColor.rgb = mix(fragColor.rgb, vec3(1.0, 0.72, 0.1), 0.85 * line);
+  }
+#endif
 }

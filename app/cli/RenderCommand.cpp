@@ -108,6 +108,14 @@ CliOptions renderOptions() {
                                         "leaving out pixels where the height map is minified "
                                         "(mip level 1 or more; grey in the picture)."),
                      QStringLiteral("shading")});
+  options.push_back({option::kRepeats, QStringLiteral("n"),
+                     QStringLiteral("Tile preview: repeat the material N times more in each "
+                                    "direction than its tiling says (the GUI's Tile 3x3)."),
+                     QStringLiteral("1")});
+  options.push_back({option::kSeams,
+                     {},
+                     QStringLiteral("Tile preview: draw lines where the maps' edges meet."),
+                     {}});
   for (CliOption& option : lightingOptions())
     options.push_back(std::move(option));
   options.push_back(strictOption(QStringLiteral("rendering")));
@@ -351,6 +359,10 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
     return kExitUsage;
   }
   request.frame.debugView = *view;
+  const std::optional<int> repeats = integerOption(parser, option::kRepeats, 1, 1, 64);
+  if (!repeats)
+    return kExitUsage;
+  request.frame.tiles = {*repeats, parser.isSet(option::kSeams)};
   return std::nullopt;
 }
 

@@ -50,7 +50,8 @@ CliOptions tileableOptions() {
                       "shifted, keeping its histogram (stochastic textures)."),
        QStringLiteral("quilt")},
       {option::kPatch, QStringLiteral("texels"),
-       QStringLiteral("quilt: the patch's width; 0 picks a quarter of the shorter side."),
+       QStringLiteral("quilt: the patch's width (its outer thirds are cut in); 0 picks a third of "
+                      "the shorter side."),
        QStringLiteral("0")},
       {option::kFeather, QStringLiteral("texels"),
        QStringLiteral("quilt: texels blended on each side of a cut."), QStringLiteral("2")},

@@ -40,8 +40,9 @@ struct TileMap {
 
 struct TileableOptions {
   TileMethod method = TileMethod::Quilt;
-  // Quilt: width in texels of the patch laid over each wrap seam; 0 picks a quarter of the
-  // image's shorter side. At most half that side (the patch needs somewhere else to come from).
+  // Quilt: width in texels of the patch laid over each wrap seam (its outer thirds are cut into
+  // the image); 0 picks a third of the image's shorter side. At most half that side (the patch
+  // needs somewhere else to come from).
   int patch = 0;
   int feather = 2;     // quilt: texels on each side of a cut that are blended
   bool recut = false;  // make an axis anew even when it already tiles

@@ -28,7 +28,8 @@ uniform int uShadowSamples;     // samples toward the light
 uniform float uShadowSoftness;  // angular diameter of the light, radians
 uniform bool uShadowLimit;      // Welsh's limit on the light ray (reference 003, 1.3)
 
-uniform float uTiling;          // repeats across the mesh UV range
+uniform float uTiling;          // repeats across the mesh UV range (times the view's preview's)
+uniform bool uTileSeams;        // the view's tile preview: lines where the map's edges meet
 uniform float uNormalStrength;  // factor on the normal's tangent-plane tilt
 uniform bool uNormalYDown;      // DirectX normal maps store +Y pointing down
 uniform bool uNormalTwoChannel; // the normal texture holds X, Y only (BC5, EAC RG11, DXT5nm)

@@ -106,6 +106,15 @@ void MaterialDocument::applyGenerated(
   m_undoStack.endMacro();
 }
 
+void MaterialDocument::applyMaps(
+    const std::vector<std::pair<core::MapSlot, std::shared_ptr<const core::Image>>>& maps,
+    const QString& label) {
+  m_undoStack.beginMacro(label);
+  for (const auto& [slot, image] : maps)
+    setMap(slot, image, QString());
+  m_undoStack.endMacro();
+}
+
 void MaterialDocument::applyLook(const core::Material& from, const QString& label) {
   if (from.technique() == m_material.technique() && from.parameters() == m_material.parameters())
     return;

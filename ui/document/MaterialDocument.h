@@ -62,6 +62,11 @@ class MaterialDocument : public QObject {
                       const QString& label,
                       const std::vector<std::pair<core::ParamId, double>>& parameterChanges);
 
+  // Maps made together (a set made tileable), each replacing its slot's, as one undo step.
+  void applyMaps(
+      const std::vector<std::pair<core::MapSlot, std::shared_ptr<const core::Image>>>& maps,
+      const QString& label);
+
   // Used by the undo commands: change the material and notify, without pushing anything.
   void applyParameter(core::ParamId id, double value);
   void applyParameters(const core::ParameterValues& values);

@@ -9,6 +9,8 @@
 #include <QUndoCommand>
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace relief::ui::inline document {
 namespace {
 
@@ -137,6 +139,15 @@ void ViewDocument::setDebugView(core::DebugView view) {
     return;
   m_debugView = view;
   Q_EMIT debugViewChanged();
+}
+
+void ViewDocument::setTilePreview(int repeats, bool seams) {
+  repeats = std::max(repeats, 1);
+  if (repeats == m_tileRepeats && seams == m_tileSeams)
+    return;
+  m_tileRepeats = repeats;
+  m_tileSeams = seams;
+  Q_EMIT tilePreviewChanged();
 }
 
 void ViewDocument::setLightBelowHorizonAllowed(bool allowed) {

@@ -84,6 +84,12 @@ class ViewDocument : public QObject {
   void frameMesh(float aspect);  // the camera framed on the mesh now
   void requestFraming();         // ... at the viewport's next frame
   void setDebugView(core::DebugView view);
+  // The tile preview, navigation like the debug view: the material repeated `repeats` times more
+  // in each direction than its tiling says (the material is not changed), and lines where the
+  // map's edges meet, to judge a tileable map's seams and repetition.
+  int tileRepeats() const { return m_tileRepeats; }
+  bool tileSeams() const { return m_tileSeams; }
+  void setTilePreview(int repeats, bool seams);
   void setLightBelowHorizonAllowed(bool allowed);
   const std::vector<CompressedPreview>& compressedPreviews() const { return m_previews; }
   CompressedView compressedView() const { return m_compressedView; }
@@ -114,6 +120,7 @@ class ViewDocument : public QObject {
   void displayChanged();
   void meshChanged();  // the mesh and its source; the camera is framed on it
   void debugViewChanged();
+  void tilePreviewChanged();
   void lightBelowHorizonAllowedChanged(bool allowed);
   void compressedPreviewChanged();  // the previews or the choice of what is shown
 
@@ -127,6 +134,8 @@ class ViewDocument : public QObject {
   core::Environment m_environment;
   core::DisplayTransform m_display;
   core::DebugView m_debugView = core::DebugView::Shading;
+  int m_tileRepeats = 1;
+  bool m_tileSeams = false;
   MeshChoice m_mesh;
   std::vector<CompressedPreview> m_previews;
   CompressedView m_compressedView = CompressedView::Original;

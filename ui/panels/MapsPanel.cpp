@@ -5,6 +5,7 @@
 #include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/panels/MapCheckBanner.h"
+#include "ui/panels/TileableBar.h"
 
 #include <QFileInfo>
 #include <QGridLayout>
@@ -62,6 +63,7 @@ MapsPanel::MapsPanel(MaterialDocument* document, QWidget* parent)
          "*_orm or *_arm are split so when opened or dropped."));
   connect(orm, &QToolButton::clicked, this, &MapsPanel::loadOrmRequested);
   outer->insertWidget(2, orm, 0, Qt::AlignRight);
+  outer->insertWidget(3, new TileableBar(document, this));
   connect(document, &MaterialDocument::mapChanged, this, &MapsPanel::showSlot);
   connect(document, &MaterialDocument::materialReset, this, &MapsPanel::showAll);
   showAll();

@@ -78,7 +78,8 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, ViewDocument* view, Q
   connect(document, &MaterialDocument::materialReset, this, materialTouched);
   for (auto signal : {&ViewDocument::cameraChanged, &ViewDocument::lightChanged,
                       &ViewDocument::environmentChanged, &ViewDocument::displayChanged,
-                      &ViewDocument::debugViewChanged, &ViewDocument::compressedPreviewChanged})
+                      &ViewDocument::debugViewChanged, &ViewDocument::compressedPreviewChanged,
+                      &ViewDocument::tilePreviewChanged})
     connect(view, signal, this, &ViewportWidget::showViewDocument);
   connect(view, &ViewDocument::meshChanged, this, [this] {
     m_meshDirty = true;
@@ -124,6 +125,7 @@ void ViewportWidget::showViewDocument() {
   m_frame.view.environment = m_view->environment();
   m_frame.view.display = m_view->display();
   m_frame.debugView = m_view->debugView();
+  m_frame.tiles = {m_view->tileRepeats(), m_view->tileSeams()};
   if (!m_framing)
     changed();
 }

@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QFileInfo>
 #include <QLabel>
+#include <QSignalBlocker>
 
 namespace relief::ui::inline window {
 
@@ -55,6 +56,31 @@ ViewToolBar::ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* 
   });
   addWidget(new QLabel(tr("  Mesh ")));
   addWidget(m_meshBox);
+  addSeparator();
+
+  // The tile preview: the view's, never the material's tiling (nothing exported changes).
+  m_tile = addAction(tr("Tile 3×3"));
+  m_tile->setObjectName(QStringLiteral("tilePreview"));
+  m_tile->setCheckable(true);
+  m_tile->setShortcut(QKeySequence(tr("T")));
+  m_tile->setToolTip(
+      tr("Repeat the material 3×3 in the view, to judge how its maps tile: seams and "
+         "repetition. The material's own tiling is not changed. (T)"));
+  m_seams = addAction(tr("Seams"));
+  m_seams->setObjectName(QStringLiteral("tileSeams"));
+  m_seams->setCheckable(true);
+  m_seams->setShortcut(QKeySequence(tr("Shift+T")));
+  m_seams->setToolTip(tr("Draw lines where the maps' edges meet on the surface. (Shift+T)"));
+  const auto applyTiles = [this] {
+    m_view->setTilePreview(m_tile->isChecked() ? 3 : 1, m_seams->isChecked());
+  };
+  connect(m_tile, &QAction::toggled, this, applyTiles);
+  connect(m_seams, &QAction::toggled, this, applyTiles);
+  connect(view, &ViewDocument::tilePreviewChanged, this, [this] {
+    const QSignalBlocker tileBlocker(m_tile), seamsBlocker(m_seams);
+    m_tile->setChecked(m_view->tileRepeats() > 1);
+    m_seams->setChecked(m_view->tileSeams());
+  });
   addSeparator();
 
   m_compare = addAction(tr("Compare A|B"));

@@ -1,7 +1,7 @@
 // ViewToolBar: the main window's "View" toolbar — what the viewport shows (the shaded material
-// or a diagnostic view), the mesh it is shown on, and the A|B comparison. The debug view and the
-// mesh are the view document's, and the boxes follow it whoever changed them (a preset, undo);
-// the comparison is the viewport's own.
+// or a diagnostic view), the mesh it is shown on, the tile preview and the A|B comparison. The
+// debug view and the mesh are the view document's, and the boxes follow it whoever changed them (a
+// preset, undo); the comparison is the viewport's own.
 #pragma once
 
 #include "ui/Forward.h"
@@ -24,6 +24,8 @@ class ViewToolBar : public QToolBar {
   QComboBox* meshBox() const { return m_meshBox; }
   QAction* compareAction() const { return m_compare; }
   QAction* holdAction() const { return m_holdAsB; }
+  QAction* tileAction() const { return m_tile; }
+  QAction* seamsAction() const { return m_seams; }
 
  Q_SIGNALS:
   // A primitive was picked in the mesh box (by name); the window loads it and reports problems.
@@ -38,6 +40,8 @@ class ViewToolBar : public QToolBar {
   QComboBox* m_meshBox;
   QAction* m_compare;
   QAction* m_holdAsB;
+  QAction* m_tile;
+  QAction* m_seams;
 };
 
 }  // namespace relief::ui::inline window
