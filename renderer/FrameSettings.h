@@ -22,10 +22,14 @@ struct SplitComparison {
 };
 
 // Looking at a material as a tile: the view's own repeats on top of the material's tiling (not
-// part of the material: nothing is exported or saved), and lines where the map's edges meet.
+// part of the material: nothing is exported or saved), lines where the map's edges meet, and
+// hex-tiling against visible repetition (shaders/include/hex_tiling.glsl; where the technique
+// supports it, core::supportsHexTiling, with repeating UVs, in the shaded and data views but not
+// the error view, whose exact trace reads the map as it is).
 struct TilePreview {
   int repeats = 1;
   bool seams = false;
+  bool hex = false;
 };
 
 struct FrameSettings {

@@ -152,7 +152,7 @@ int MaterialRenderer::maxImageSize() {
 ShaderProgram* MaterialRenderer::programFor(const core::Material& material,
                                             const FrameSettings& frame, std::string& error) {
   const std::vector<std::string> defines =
-      materialShaderDefines(material, frame.debugView, frame.output);
+      materialShaderDefines(material, frame.debugView, frame.output, frame.tiles.hex);
   std::unique_ptr<ShaderProgram>& program = m_materialPrograms[joined(defines)];
   if (!program) {
     ShaderStagePaths paths{"material.vert", "material.frag", {}, {}};

@@ -35,8 +35,14 @@ const std::vector<std::string>& materialTableDefines() {
   return defines;
 }
 
+bool hexTilingApplies(const core::Material& material, core::DebugView view, FrameOutput output) {
+  return core::supportsHexTiling(material.technique()) &&
+         core::UvEdge(int(material.parameter(core::ParamId::UvEdge))) == core::UvEdge::Repeat &&
+         view != core::DebugView::Error && output != FrameOutput::EyeRays;
+}
+
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
-                                               FrameOutput output) {
+                                               FrameOutput output, bool hexTiling) {
   using core::ParamId;
   std::vector<std::string> defines = {
       std::string(core::techniqueShaderDefine(material.technique()))};
@@ -53,6 +59,8 @@ std::vector<std::string> materialShaderDefines(const core::Material& material, c
   }
   if (core::ShadingModel(int(material.parameter(ParamId::Shading))) == core::ShadingModel::Pbr)
     defines.emplace_back("SHADING_PBR");
+  if (hexTiling && hexTilingApplies(material, view, output))
+    defines.emplace_back("HEX_TILING");
   if (output == FrameOutput::EyeRays) {
     defines.emplace_back("DEBUG_VIEW VIEW_RAY");  // no depth offset: nothing is shaded
     return defines;

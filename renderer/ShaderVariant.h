@@ -13,8 +13,13 @@
 namespace relief::renderer {
 
 // The #defines for material.vert/frag, in a fixed order (the list doubles as a cache key).
+// `hexTiling`: the view asks for hex-tiling (HEX_TILING, where it applies; FrameSettings.h).
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
-                                               FrameOutput output);
+                                               FrameOutput output, bool hexTiling = false);
+
+// Whether hex-tiling applies to this material and view (the technique, repeating UVs, not the
+// error view or the eye rays).
+bool hexTilingApplies(const core::Material& material, core::DebugView view, FrameOutput output);
 
 // The #defines every material program gets from core's tables, the same in every variant (so
 // built once, and not part of the cache key): VIEW_<NAME> with each debug view's number

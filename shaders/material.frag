@@ -96,12 +96,20 @@ void main() {
 #endif
 
   SurfaceSample surface;
+#ifdef HEX_TILING
+  // Every surface map through the same hexagons and weights as the height (hex_tiling.glsl).
+  HexTaps taps = hexTaps(visible.uv, dx, dy);
+#define SURFACE_MAP(map) sampleMapHex(map, taps, dx, dy)
+  surface.normal = sampleNormalMapHex(taps, dx, dy);
+#else
+#define SURFACE_MAP(map) sampleMap(map, visible.uv, dx, dy)
   surface.normal = sampleNormalMap(visible.uv, dx, dy);
-  surface.albedo = sampleMap(uColorMap, visible.uv, dx, dy).rgb;  // sRGB texture: linear
-  surface.occlusion = uHasOcclusionMap ? sampleMap(uOcclusionMap, visible.uv, dx, dy).r : 1.0;
-  surface.roughness = uHasRoughnessMap ? sampleMap(uRoughnessMap, visible.uv, dx, dy).r : 0.0;
+#endif
+  surface.albedo = SURFACE_MAP(uColorMap).rgb;  // sRGB texture: linear
+  surface.occlusion = uHasOcclusionMap ? SURFACE_MAP(uOcclusionMap).r : 1.0;
+  surface.roughness = uHasRoughnessMap ? SURFACE_MAP(uRoughnessMap).r : 0.0;
 #ifdef SHADING_PBR
-  surface.metallic = uHasMetallicMap ? sampleMap(uMetallicMap, visible.uv, dx, dy).r : 1.0;
+  surface.metallic = uHasMetallicMap ? SURFACE_MAP(uMetallicMap).r : 1.0;
 #else
   surface.metallic = 0.0;
 #endif

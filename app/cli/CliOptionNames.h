@@ -20,6 +20,7 @@ inline const QString kFeather = QStringLiteral("feather");
 inline const QString kFormat = QStringLiteral("format");
 inline const QString kHeight = QStringLiteral("height");
 inline const QString kHeightScale = QStringLiteral("height-scale");
+inline const QString kHex = QStringLiteral("hex");
 inline const QString kIn = QStringLiteral("in");
 inline const QString kJson = QStringLiteral("json");
 inline const QString kLayout = QStringLiteral("layout");

@@ -116,6 +116,11 @@ CliOptions renderOptions() {
                      {},
                      QStringLiteral("Tile preview: draw lines where the maps' edges meet."),
                      {}});
+  options.push_back({option::kHex,
+                     {},
+                     QStringLiteral("Hex-tiling against visible repetition (the GUI's Hex): "
+                                    "not with cone, quadtree or displacement."),
+                     {}});
   for (CliOption& option : lightingOptions())
     options.push_back(std::move(option));
   options.push_back(strictOption(QStringLiteral("rendering")));
@@ -362,7 +367,7 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
   const std::optional<int> repeats = integerOption(parser, option::kRepeats, 1, 1, 64);
   if (!repeats)
     return kExitUsage;
-  request.frame.tiles = {*repeats, parser.isSet(option::kSeams)};
+  request.frame.tiles = {*repeats, parser.isSet(option::kSeams), parser.isSet(option::kHex)};
   return std::nullopt;
 }
 

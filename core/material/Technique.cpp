@@ -77,6 +77,10 @@ bool isExactTracing(Technique technique) {
   return kTechniques[std::size_t(technique)].exact;
 }
 
+bool supportsHexTiling(Technique technique) {
+  return !isExactTracing(technique) && technique != Technique::Displacement;
+}
+
 bool isOccludingRelief(Technique technique) {
   return isMarchingTechnique(technique) || technique == Technique::Displacement;
 }

@@ -35,6 +35,11 @@ bool isExactTracing(Technique technique);
 // ask the engine for its occlusion parallax then, not for the plain offset.
 bool isOccludingRelief(Technique technique);
 
+// Whether hex-tiling (the view's anti-repetition, shaders/include/hex_tiling.glsl) can apply:
+// not to the exact tracers, whose cone map and max-mip pyramid describe the map as it is, nor
+// to displacement, whose tessellation reads the map directly.
+bool supportsHexTiling(Technique technique);
+
 std::span<const Technique> allTechniques();
 std::string_view techniqueName(Technique technique);
 std::string_view techniqueLabel(Technique technique);

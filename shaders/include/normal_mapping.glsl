@@ -19,3 +19,17 @@ vec3 sampleNormalMap(vec2 uv, vec2 dx, vec2 dy) {
   }
   return decodeNormal(encoded);
 }
+
+#ifdef HEX_TILING
+// The hexagons' normals blended as slopes (dh/du, dh/dv = -n.xy / n.z), as Mikkelsen 2022
+// blends surface gradients: averaging the vectors themselves would flatten the bumps where the
+// hexagons meet.
+vec3 sampleNormalMapHex(HexTaps taps, vec2 dx, vec2 dy) {
+  vec2 slope = vec2(0.0);
+  for (int i = 0; i < 3; ++i) {
+    vec3 n = sampleNormalMap(taps.uv[i], dx, dy);
+    slope += taps.weight[i] * (-n.xy / n.z);
+  }
+  return normalize(vec3(-slope, 1.0));
+}
+#endif

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -50,6 +51,31 @@ TEST(ShaderValidation, EveryStageCompilesWithGlslang) {
     const std::string log = runValidator(file, exitCode);
     ASSERT_NE(exitCode, 127) << "glslangValidator is not installed (tools/install-deps.sh)";
     EXPECT_EQ(exitCode, 0) << stage.path << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+  }
+}
+
+// The hex-tiled variant (shaders/include/hex_tiling.glsl) of every technique that takes it, as
+// the renderer defines it, including the integer hash and the slope blend.
+TEST(ShaderValidation, HexTiledVariantsCompileWithGlslang) {
+  core::Material material;
+  for (core::Technique technique : core::allTechniques()) {
+    if (!core::supportsHexTiling(technique))
+      continue;
+    material.setTechnique(technique);
+    std::vector<std::string> defines = materialTableDefines();
+    for (const std::string& define :
+         materialShaderDefines(material, core::DebugView::Shading, FrameOutput::Display, true))
+      defines.push_back(define);
+    ASSERT_NE(std::find(defines.begin(), defines.end(), "HEX_TILING"), defines.end());
+    core::Result<ResolvedShader> resolved =
+        resolveShaderIncludes("material.frag", loadShaderSource, shaderPrelude(defines));
+    ASSERT_TRUE(resolved.ok()) << resolved.error();
+    const std::string name = std::string(core::techniqueName(technique));
+    const std::string file = test::scratchFolder() + "/expanded_hex_" + name + ".frag";
+    std::ofstream(file) << resolved->source;
+    int exitCode = 0;
+    const std::string log = runValidator(file, exitCode);
+    EXPECT_EQ(exitCode, 0) << name << ":\n" << mapShaderLog(log, resolved->lineOrigins);
   }
 }
 

@@ -141,12 +141,13 @@ void ViewDocument::setDebugView(core::DebugView view) {
   Q_EMIT debugViewChanged();
 }
 
-void ViewDocument::setTilePreview(int repeats, bool seams) {
+void ViewDocument::setTilePreview(int repeats, bool seams, bool hex) {
   repeats = std::max(repeats, 1);
-  if (repeats == m_tileRepeats && seams == m_tileSeams)
+  if (repeats == m_tileRepeats && seams == m_tileSeams && hex == m_hexTiling)
     return;
   m_tileRepeats = repeats;
   m_tileSeams = seams;
+  m_hexTiling = hex;
   Q_EMIT tilePreviewChanged();
 }
 

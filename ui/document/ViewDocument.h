@@ -85,11 +85,13 @@ class ViewDocument : public QObject {
   void requestFraming();         // ... at the viewport's next frame
   void setDebugView(core::DebugView view);
   // The tile preview, navigation like the debug view: the material repeated `repeats` times more
-  // in each direction than its tiling says (the material is not changed), and lines where the
-  // map's edges meet, to judge a tileable map's seams and repetition.
+  // in each direction than its tiling says (the material is not changed), lines where the map's
+  // edges meet, and hex-tiling against visible repetition (renderer/FrameSettings.h), to judge a
+  // tileable map's seams and repetition.
   int tileRepeats() const { return m_tileRepeats; }
   bool tileSeams() const { return m_tileSeams; }
-  void setTilePreview(int repeats, bool seams);
+  bool hexTiling() const { return m_hexTiling; }
+  void setTilePreview(int repeats, bool seams, bool hex);
   void setLightBelowHorizonAllowed(bool allowed);
   const std::vector<CompressedPreview>& compressedPreviews() const { return m_previews; }
   CompressedView compressedView() const { return m_compressedView; }
@@ -136,6 +138,7 @@ class ViewDocument : public QObject {
   core::DebugView m_debugView = core::DebugView::Shading;
   int m_tileRepeats = 1;
   bool m_tileSeams = false;
+  bool m_hexTiling = false;
   MeshChoice m_mesh;
   std::vector<CompressedPreview> m_previews;
   CompressedView m_compressedView = CompressedView::Original;

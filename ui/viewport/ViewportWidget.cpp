@@ -125,7 +125,7 @@ void ViewportWidget::showViewDocument() {
   m_frame.view.environment = m_view->environment();
   m_frame.view.display = m_view->display();
   m_frame.debugView = m_view->debugView();
-  m_frame.tiles = {m_view->tileRepeats(), m_view->tileSeams()};
+  m_frame.tiles = {m_view->tileRepeats(), m_view->tileSeams(), m_view->hexTiling()};
   if (!m_framing)
     changed();
 }

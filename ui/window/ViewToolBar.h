@@ -26,6 +26,7 @@ class ViewToolBar : public QToolBar {
   QAction* holdAction() const { return m_holdAsB; }
   QAction* tileAction() const { return m_tile; }
   QAction* seamsAction() const { return m_seams; }
+  QAction* hexAction() const { return m_hex; }
 
  Q_SIGNALS:
   // A primitive was picked in the mesh box (by name); the window loads it and reports problems.
@@ -42,6 +43,7 @@ class ViewToolBar : public QToolBar {
   QAction* m_holdAsB;
   QAction* m_tile;
   QAction* m_seams;
+  QAction* m_hex;
 };
 
 }  // namespace relief::ui::inline window
