@@ -7,6 +7,7 @@
 #include "core/generators/HeightFromColor.h"
 #include "core/generators/HeightFromNormal.h"
 #include "core/generators/NormalFromHeight.h"
+#include "core/generators/SurfaceGuess.h"
 
 #include <array>
 #include <cmath>
@@ -174,11 +175,60 @@ GeneratorInfo delightGenerator() {
        edgeOption(0)}};
 }
 
+GeneratorInfo roughnessGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::Roughness,
+      "roughness",
+      "Roughness from colour",
+      "Guesses roughness from a photograph: its luminance, between the image's own 5th and 95th "
+      "percentiles, runs from the roughest (dark pores, dust) to the smoothest (exposed, worn "
+      "tops); saturated colour and, with a height map, cavities and ridges adjust it.",
+      {{"in", "Colour map (a photograph)", MapSlot::Color},
+       {"height", "Height map (for cavities)", MapSlot::Height, true}},
+      MapSlot::Roughness,
+      {numberOption("roughest", "Roughest", "roughness", 0.0, 1.0, 0.9, 2,
+                    "The roughness of the darkest texels (the 5th percentile of luminance)."),
+       numberOption("smoothest", "Smoothest", "roughness", 0.0, 1.0, 0.45, 2,
+                    "The roughness of the brightest texels (the 95th percentile)."),
+       numberOption("saturation", "Saturated colour", "", -1.0, 1.0, 0.0, 2,
+                    "How much smoother (positive) or rougher (negative) a fully saturated "
+                    "texel is: paint and glaze are smoother than the grey around them."),
+       numberOption("cavity", "Cavity", "", 0.0, 1.0, 0.3, 2,
+                    "With a height map: how much rougher the deepest cavities get (and "
+                    "smoother the ridges), up to half the range."),
+       numberOption("radius", "Cavity radius", "texels", 0.0, 64.0, 2.0, 1,
+                    "The height is blurred over this before its cavities are found."),
+       edgeOption(0)}};
+}
+
+GeneratorInfo metallicGenerator() {
+  return GeneratorInfo{
+      GeneratorKind::Metallic,
+      "metallic",
+      "Metallic from colour",
+      "Guesses where a photograph shows bare metal: texels whose linear luminance and "
+      "saturation both fall in the ranges (bright; grey for steel and aluminium, saturated "
+      "for gold and copper). Check the share it reports: bright plaster reads as metal too.",
+      {{"in", "Colour map (a photograph)", MapSlot::Color}},
+      MapSlot::Metallic,
+      {numberOption("brightnessLow", "Brightness from", "linear", 0.0, 1.0, 0.5, 2,
+                    "Metal is at least this bright (bare metals' albedo is above about 0.5)."),
+       numberOption("brightnessHigh", "Brightness to", "linear", 0.0, 1.0, 1.0, 2,
+                    "... and at most this bright."),
+       numberOption("saturationLow", "Saturation from", "", 0.0, 1.0, 0.0, 2,
+                    "Metal is at least this saturated (raise it for gold or copper only)."),
+       numberOption("saturationHigh", "Saturation to", "", 0.0, 1.0, 0.25, 2,
+                    "... and at most this saturated (0.25: grey metals; 0.7 takes gold and "
+                    "copper in)."),
+       numberOption("softness", "Softness", "", 0.0, 0.5, 0.05, 2,
+                    "The width of the ranges' soft edges.")}};
+}
+
 // One function per generator, in GeneratorKind order (generatorInfo indexes them by kind).
 std::vector<GeneratorInfo> buildTable() {
   return {normalGenerator(),           heightGenerator(),    heightFromColorGenerator(),
           ambientOcclusionGenerator(), curvatureGenerator(), packGenerator(),
-          delightGenerator()};
+          delightGenerator(),          roughnessGenerator(), metallicGenerator()};
 }
 
 template <class Enum>
@@ -411,6 +461,43 @@ Result<GeneratedMap> runGenerator(const GeneratorRequest& given, const WorkContr
                              formatted(" to %.2fx of its mean", delit.lightHigh) +
                              formatted(" (RMS %.0f%%)", 100.0 * delit.lightRms) +
                              formatted("; divided out at strength %.2f", options.strength));
+      break;
+    }
+    case GeneratorKind::Roughness: {
+      const Image* height = request.inputs.size() > 1 ? request.inputs[1] : nullptr;
+      if (height && (height->width() != input.width() || height->height() != input.height())) {
+        return makeError("the height map is " + std::to_string(height->width()) + "x" +
+                         std::to_string(height->height()) + ", the colour map " +
+                         std::to_string(input.width()) + "x" + std::to_string(input.height()) +
+                         "; give maps of one size");
+      }
+      RoughnessGuessOptions options;
+      options.roughest = numberValue(values, kind, "roughest");
+      options.smoothest = numberValue(values, kind, "smoothest");
+      options.saturation = numberValue(values, kind, "saturation");
+      options.cavity = numberValue(values, kind, "cavity");
+      options.cavityRadius = numberValue(values, kind, "radius");
+      options.edge = edge;
+      options.texelScale = request.texelScale;
+      SurfaceGuess guess = guessRoughness(input, height, options, control);
+      result.image = std::move(guess.map);
+      result.notes.push_back(
+          formatted("roughness %.2f", guess.low) + formatted(" to %.2f", guess.high) +
+          formatted(", mean %.2f", guess.mean) +
+          (height ? std::string() : std::string("; no height map: no cavities")));
+      break;
+    }
+    case GeneratorKind::Metallic: {
+      MetallicGuessOptions options;
+      options.brightnessLow = numberValue(values, kind, "brightnessLow");
+      options.brightnessHigh = numberValue(values, kind, "brightnessHigh");
+      options.saturationLow = numberValue(values, kind, "saturationLow");
+      options.saturationHigh = numberValue(values, kind, "saturationHigh");
+      options.softness = numberValue(values, kind, "softness");
+      SurfaceGuess guess = guessMetallic(input, options, control);
+      result.image = std::move(guess.map);
+      result.notes.push_back(
+          formatted("%.1f%% of the texels read as metal", 100.0 * guess.metalFraction));
       break;
     }
   }

@@ -27,6 +27,8 @@ enum class GeneratorKind {
   Curvature,         // curvature from height or normal
   Pack,              // channel packing: height into the normal map's alpha, ORM, mask maps
   Delight,           // a photograph's baked light divided out (albedo)
+  Roughness,         // a roughness guess from colour (and height)
+  Metallic,          // a metallic guess from colour
 };
 
 struct GeneratorInput {
