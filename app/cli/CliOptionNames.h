@@ -17,6 +17,7 @@ inline const QString kEnvironmentIntensity = QStringLiteral("environment-intensi
 inline const QString kEnvironmentRotation = QStringLiteral("environment-rotation");
 inline const QString kExposure = QStringLiteral("exposure");
 inline const QString kFeather = QStringLiteral("feather");
+inline const QString kFlipMap = QStringLiteral("flip-map");
 inline const QString kFormat = QStringLiteral("format");
 inline const QString kHeight = QStringLiteral("height");
 inline const QString kHeightScale = QStringLiteral("height-scale");

@@ -6,8 +6,10 @@
 #include "CliCommon.h"
 #include "TerminalProgress.h"
 #include "core/compression/CompressionJob.h"
+#include "core/compression/Flip.h"
 #include "core/compression/MapFile.h"
 #include "core/compression/TextureFile.h"
+#include "core/image/Heatmap.h"
 #include "core/image/ImageIO.h"
 
 #include <QFileInfo>
@@ -306,10 +308,16 @@ int runCompare(const QStringList& arguments) {
                                QStringLiteral("An image or a .dds/.ktx2 file."));
   CliOptions options = slotOptions();
   options.push_back({option::kJson, {}, QStringLiteral("Print the metrics as JSON."), {}});
+  options.push_back({option::kFlipMap,
+                     QStringLiteral("file"),
+                     QStringLiteral("Also write the per-pixel FLIP error as a heat map (navy: "
+                                    "none, red: most), an image the size of the maps."),
+                     {}});
   addOptions(parser, options);
   if (auto exit =
           parseOrExit(parser, arguments,
-                      QStringLiteral("relief-cli compare REFERENCE CANDIDATE [--normal] [--json]")))
+                      QStringLiteral("relief-cli compare REFERENCE CANDIDATE [--normal] [--json] "
+                                     "[--flip-map FILE]")))
     return *exit;
   if (parser.positionalArguments().size() != 2) {
     printError(QStringLiteral("compare takes two files: REFERENCE CANDIDATE"));
@@ -354,6 +362,22 @@ int runCompare(const QStringList& arguments) {
     report.format = candidate->texture->format;
     report.size = core::measureSize(candidate->texture->format, reference->channels(),
                                     candidate->texture->byteSize());
+  }
+  if (parser.isSet(option::kFlipMap)) {
+    const core::FlipResult flip = core::measureFlip(reference.value(), image);
+    core::Image heat(flip.errorMap.width(), flip.errorMap.height(), 3, core::ColorSpace::Srgb);
+    for (int y = 0; y < heat.height(); ++y) {
+      for (int x = 0; x < heat.width(); ++x) {
+        const glm::vec3 colour = core::heatmapColor(flip.errorMap.at(x, y, 0));
+        for (int c = 0; c < 3; ++c)
+          heat.at(x, y, c) = colour[c];
+      }
+    }
+    const std::string mapPath = parser.value(option::kFlipMap).toStdString();
+    if (core::Status saved = core::saveImage(heat, mapPath, core::SampleFormat::UInt8); !saved) {
+      printError(QString::fromStdString(saved.error()));
+      return kExitFailure;
+    }
   }
   if (parser.isSet(option::kJson))
     printOut(QString::fromUtf8(QJsonDocument(core::reportToJson(report)).toJson()));

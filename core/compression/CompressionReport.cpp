@@ -1,6 +1,8 @@
 // CompressionReport; see CompressionReport.h.
 #include "core/compression/CompressionReport.h"
 
+#include "core/compression/Flip.h"
+
 #include <QJsonArray>
 
 #include <cmath>
@@ -33,6 +35,9 @@ CompressionReport makeCompressionReport(const Image& reference, const Image& can
   CompressionReport report;
   report.slot = slot;
   report.image = measureImageError(reference, candidate);
+  const FlipResult flip = measureFlip(reference, candidate);
+  report.flip = flip.mean;
+  report.flipP95 = flip.p95;
   if (slot == MapSlot::Normal)
     report.normal = measureNormalError(reference, candidate);
   if (slot == MapSlot::Height) {
@@ -67,6 +72,7 @@ QJsonObject reportToJson(const CompressionReport& report) {
   json["psnr"] = decibels(report.image.psnr);
   json["mse"] = report.image.mse;
   json["ssim"] = report.image.ssim;
+  json["flip"] = QJsonObject{{"mean", report.flip}, {"p95", report.flipP95}};
   json["maxError"] = report.image.maxError;
   if (report.normal) {
     json["angularError"] = QJsonObject{{"meanDegrees", report.normal->meanDegrees},
@@ -105,6 +111,8 @@ std::string reportToText(const CompressionReport& report) {
             decibelText(report.image.channels[c].psnr);
   }
   text += ")\n";
+  text += format("FLIP: %.4f (95th percentile %.4f; 0 identical, 1 as different as images get)\n",
+                 report.flip, report.flipP95);
   text += format("SSIM: %.4f\nmax error: %.4f (%.1f/255)\n", report.image.ssim,
                  report.image.maxError, report.image.maxError * 255.0);
   if (report.normal) {

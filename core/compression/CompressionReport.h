@@ -19,6 +19,9 @@ struct CompressionReport {
   ImageError image;
   std::optional<NormalError> normal;  // normal maps
   std::optional<HeightError> height;  // height maps
+  // FLIP (Flip.h) of the map as a viewer sees it: mean and 95th percentile, 0 = identical.
+  double flip = 0.0;
+  double flipP95 = 0.0;
   double heightScale = 0.0;
   std::optional<TextureFormat> format;  // when the candidate is a compressed texture
   std::optional<SizeFigures> size;

@@ -1065,6 +1065,19 @@ TEST(Cli, CompressWritesDdsAndKtx2WithMetrics) {
   EXPECT_NEAR(jsonOf(viaTexture)["psnr"].toDouble(), metrics["psnr"].toDouble(), 1e-6);
   EXPECT_NEAR(jsonOf(viaImage)["psnr"].toDouble(), metrics["psnr"].toDouble(), 0.05);
   EXPECT_FALSE(jsonOf(viaImage).contains("bitsPerPixel"));
+  // FLIP beside PSNR (core/compression/Flip.h): above 0 for BC1, a small fraction of its 0..1
+  // range; 0 against itself; --flip-map writes the heat map at the map's size.
+  const double flip = jsonOf(viaTexture)["flip"].toObject()["mean"].toDouble();
+  EXPECT_GT(flip, 0.0);
+  EXPECT_LT(flip, 0.2);
+  CliRun self = runCli({QStringLiteral("compare"), q(colour), q(colour), QStringLiteral("--json"),
+                        QStringLiteral("--flip-map"), q(folder + "/flip.png")});
+  ASSERT_EQ(self.exitCode, 0) << self.err;
+  EXPECT_EQ(jsonOf(self)["flip"].toObject()["mean"].toDouble(), 0.0);
+  core::Result<core::ImageFileInfo> flipMap = core::readImageInfo(folder + "/flip.png");
+  ASSERT_TRUE(flipMap.ok()) << flipMap.error();
+  EXPECT_EQ(flipMap->width, 256);
+  EXPECT_EQ(flipMap->channels, 3);
 
   // A normal map in BC5 inside KTX2: the angular error is reported, and the slot travels in the
   // file, so compare measures angles without --normal.

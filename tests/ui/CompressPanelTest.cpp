@@ -287,6 +287,17 @@ TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatB
   const QString diskHeader = dialog->table()->horizontalHeaderItem(2)->text();
   EXPECT_TRUE(diskHeader.contains(QStringLiteral("Zstd 3"))) << diskHeader.toStdString();
   EXPECT_TRUE(diskHeader.contains(QStringLiteral("with mipmaps"))) << diskHeader.toStdString();
+  // A FLIP column (core/compression/Flip.h) beside SSIM, a value in (0, 1) for every lossy row.
+  int flipColumn = -1;
+  for (int c = 0; c < dialog->table()->columnCount(); ++c)
+    if (dialog->table()->horizontalHeaderItem(c)->text() == QStringLiteral("FLIP"))
+      flipColumn = c;
+  ASSERT_GE(flipColumn, 0);
+  for (int row = 0; row < dialog->table()->rowCount(); ++row) {
+    const double flip = dialog->table()->item(row, flipColumn)->data(Qt::UserRole).toDouble();
+    EXPECT_GT(flip, 0.0) << row;
+    EXPECT_LT(flip, 1.0) << row;
+  }
   // No two shown point labels sit closer than a label's size (they printed over each other), and
   // at least one is shown.
   std::vector<QPointF> shown;

@@ -37,6 +37,7 @@ enum Column {
   RatioColumn,
   QualityColumn,
   SsimColumn,
+  FlipColumn,
   DetailColumn,
   SecondsColumn,
   ColumnCount
@@ -66,7 +67,8 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
   m_runner = new CompressionRunner(this);
   m_table = new QTableWidget(0, ColumnCount, this);
   m_table->setHorizontalHeaderLabels({tr("Format"), tr("Bits/texel"), tr("On disk"), tr("vs RGBA8"),
-                                      tr("Quality"), tr("SSIM"), tr("Detail"), tr("Seconds")});
+                                      tr("Quality"), tr("SSIM"), tr("FLIP"), tr("Detail"),
+                                      tr("Seconds")});
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setSelectionMode(QAbstractItemView::SingleSelection);
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -230,6 +232,9 @@ void CompareAllDialog::addRow(const core::CompressionOutcome& outcome) {
   }
   m_table->setItem(row, SsimColumn,
                    sortableNumber(report.image.ssim, QString::number(report.image.ssim, 'f', 4)));
+  // FLIP: the perceptual difference (core/compression/Flip.h), lower is better.
+  m_table->setItem(row, FlipColumn,
+                   sortableNumber(report.flip, QString::number(report.flip, 'f', 4)));
   m_table->setItem(
       row, SecondsColumn,
       sortableNumber(report.encodeSeconds, QString::number(report.encodeSeconds, 'f', 2)));

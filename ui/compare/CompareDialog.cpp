@@ -27,6 +27,7 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
   m_mode->addItem(tr("Side by side"), int(CompareView::Mode::SideBySide));
   m_mode->addItem(tr("Difference"), int(CompareView::Mode::Difference));
   m_mode->addItem(tr("Thresholded difference"), int(CompareView::Mode::Threshold));
+  m_mode->addItem(tr("FLIP error"), int(CompareView::Mode::Flip));
   m_mode->setToolTip(tr("1-4 switch modes"));
 
   m_channel = new QComboBox(this);

@@ -21,7 +21,8 @@ class CompareView : public QWidget {
   Q_OBJECT
 
  public:
-  enum class Mode { Wipe, SideBySide, Difference, Threshold };
+  // Flip: the per-pixel FLIP error (core/compression/Flip.h) as a heat map.
+  enum class Mode { Wipe, SideBySide, Difference, Threshold, Flip };
 
   explicit CompareView(QWidget* parent = nullptr);
 
@@ -73,6 +74,8 @@ class CompareView : public QWidget {
 
   std::shared_ptr<const core::Image> m_original, m_compressed;
   QImage m_left, m_right, m_difference;
+  QImage m_flipMap;  // made on first use per pair of images (FLIP takes a moment)
+  double m_flipMean = 0.0;
   Mode m_mode = Mode::Wipe;
   double m_gain = 10.0;
   double m_threshold = 8.0 / 255.0;

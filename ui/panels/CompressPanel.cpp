@@ -40,6 +40,7 @@ QString qualityText(const core::CompressionOutcome& outcome) {
                      ? QObject::tr("%1 dB").arg(report.image.psnr, 0, 'f', 1)
                      : QObject::tr("exact");
   text += QObject::tr(", SSIM %1").arg(report.image.ssim, 0, 'f', 3);
+  text += QObject::tr(", FLIP %1").arg(report.flip, 0, 'f', 4);
   if (report.height)
     text += QObject::tr(", shift %1 tx").arg(report.height->meanTexels, 0, 'f', 3);
   return text;
