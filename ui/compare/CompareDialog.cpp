@@ -80,7 +80,7 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
 
   const auto updateEnabled = [this] {
     const auto mode = CompareView::Mode(m_mode->currentData().toInt());
-    m_gain->setEnabled(mode == CompareView::Mode::Difference);
+    m_gain->setEnabled(mode == CompareView::Mode::Difference || mode == CompareView::Mode::Flip);
     m_threshold->setEnabled(mode == CompareView::Mode::Threshold);
   };
   connect(m_mode, &QComboBox::currentIndexChanged, this, [this, updateEnabled] {

@@ -40,7 +40,7 @@ void CompareView::setImages(std::shared_ptr<const core::Image> original,
                             std::shared_ptr<const core::Image> compressed) {
   m_original = std::move(original);
   m_compressed = std::move(compressed);
-  m_flipMap = {};
+  m_flipError.reset();
   m_userMoved = false;
   rebuild();
   fitToView();
@@ -90,14 +90,19 @@ void CompareView::rebuild() {
     m_difference = renderer::toDisplayImage(
         core::thresholdedDifference(*m_original, *m_compressed, m_threshold, m_channel),
         std::nullopt);
-  } else if (m_mode == Mode::Flip && m_flipMap.isNull()) {
-    const core::FlipResult flip = core::measureFlip(*m_original, *m_compressed);
-    m_flipMean = flip.mean;
-    m_flipMap = QImage(flip.errorMap.width(), flip.errorMap.height(), QImage::Format_RGB888);
+  } else if (m_mode == Mode::Flip) {
+    if (!m_flipError) {
+      core::FlipResult flip = core::measureFlip(*m_original, *m_compressed);
+      m_flipMean = flip.mean;
+      m_flipError = std::move(flip.errorMap);
+    }
+    // The gain spreads small errors over the ramp, as it amplifies the plain difference.
+    m_flipMap = QImage(m_flipError->width(), m_flipError->height(), QImage::Format_RGB888);
     for (int y = 0; y < m_flipMap.height(); ++y) {
       uchar* line = m_flipMap.scanLine(y);
       for (int x = 0; x < m_flipMap.width(); ++x) {
-        const glm::vec3 colour = core::heatmapColor(flip.errorMap.at(x, y, 0));
+        const glm::vec3 colour =
+            core::heatmapColor(float(std::min(1.0, m_flipError->at(x, y, 0) * m_gain)));
         for (int c = 0; c < 3; ++c)
           line[3 * x + c] = uchar(std::lround(std::clamp(colour[c], 0.0f, 1.0f) * 255.0f));
       }
@@ -210,7 +215,9 @@ void CompareView::paintEvent(QPaintEvent*) {
     case Mode::Flip:
       painter.drawImage(target, m_flipMap);
       drawLabel(painter, rect().adjusted(8, 8, -8, -8), Qt::AlignTop | Qt::AlignLeft,
-                tr("FLIP %1 (mean): navy none, red most").arg(m_flipMean, 0, 'f', 4));
+                tr("FLIP x %1 (mean %2): navy none, red most")
+                    .arg(m_gain, 0, 'f', 0)
+                    .arg(m_flipMean, 0, 'f', 4));
       break;
     case Mode::Difference:
     case Mode::Threshold:

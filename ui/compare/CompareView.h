@@ -74,7 +74,10 @@ class CompareView : public QWidget {
 
   std::shared_ptr<const core::Image> m_original, m_compressed;
   QImage m_left, m_right, m_difference;
-  QImage m_flipMap;  // made on first use per pair of images (FLIP takes a moment)
+  // The FLIP error, measured on first use per pair of images (it takes a moment), and its heat
+  // map at the current gain.
+  std::optional<core::Image> m_flipError;
+  QImage m_flipMap;
   double m_flipMean = 0.0;
   Mode m_mode = Mode::Wipe;
   double m_gain = 10.0;
