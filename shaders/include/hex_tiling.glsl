@@ -59,29 +59,30 @@ vec3 hexWeights(vec3 barycentric, vec3 heights) {
   return w / max(w.x + w.y + w.z, 1e-20);
 }
 
-HexTaps hexTaps(vec2 uv, vec2 dx, vec2 dy) {
+// The three taps' coordinates around `uv`, and the point's barycentric weights.
+HexTaps hexTapPlaces(vec2 uv, out vec3 barycentric) {
   ivec2 cells[3];
-  vec3 barycentric;
   hexNeighbours(uv, cells, barycentric);
   HexTaps taps;
-  for (int i = 0; i < 3; ++i) {
-    taps.uv[i] = uv + hexOffset(cells[i]);
+  for (int i = 0; i < 3; ++i) taps.uv[i] = uv + hexOffset(cells[i]);
+  return taps;
+}
+
+HexTaps hexTaps(vec2 uv, vec2 dx, vec2 dy) {
+  vec3 barycentric;
+  HexTaps taps = hexTapPlaces(uv, barycentric);
+  for (int i = 0; i < 3; ++i)
     taps.heights[i] = heightFromTexel(sampleMap(HEIGHT_SOURCE_MAP, taps.uv[i], dx, dy));
-  }
   taps.weight = hexWeights(barycentric, taps.heights);
   return taps;
 }
 
 HexTaps hexTapsAtLevel(vec2 uv, float level) {
-  ivec2 cells[3];
   vec3 barycentric;
-  hexNeighbours(uv, cells, barycentric);
-  HexTaps taps;
-  for (int i = 0; i < 3; ++i) {
-    taps.uv[i] = uv + hexOffset(cells[i]);
+  HexTaps taps = hexTapPlaces(uv, barycentric);
+  for (int i = 0; i < 3; ++i)
     taps.heights[i] =
         heightFromTexel(textureLod(HEIGHT_SOURCE_MAP, mapCoordinates(taps.uv[i]), level));
-  }
   taps.weight = hexWeights(barycentric, taps.heights);
   return taps;
 }
