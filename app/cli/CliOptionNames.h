@@ -33,6 +33,7 @@ inline const QString kMaps = QStringLiteral("maps");
 inline const QString kMesh = QStringLiteral("mesh");
 inline const QString kMethod = QStringLiteral("method");
 inline const QString kMetrics = QStringLiteral("metrics");
+inline const QString kMipFilter = QStringLiteral("mip-filter");
 inline const QString kMips = QStringLiteral("mips");
 inline const QString kNormal = QStringLiteral("normal");
 inline const QString kOrm = QStringLiteral("orm");

@@ -82,6 +82,10 @@ CliOptions compressOptions() {
        {},
        QStringLiteral("Write a full mip chain, each level filtered for the map's kind."),
        {}},
+      {option::kMipFilter, QStringLiteral("box|kaiser"),
+       QStringLiteral("The mip chain's filter: box (area average), or kaiser (a Kaiser-windowed "
+                      "sinc, sharper and without the box's aliasing; wraps at the edges)."),
+       QStringLiteral("box")},
       {option::kOut, QStringLiteral("file"), QStringLiteral("Output .dds or .ktx2 file."), {}},
       {option::kZstd, QStringLiteral("level"),
        QStringLiteral("KTX2 only: supercompress the levels with Zstandard at this level "
@@ -169,8 +173,19 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
   job.slot = slotOption(parser).value_or(
       core::isSingleChannelFormat(*format) ? core::MapSlot::Height : core::MapSlot::Color);
   job.map = std::make_shared<const core::Image>(std::move(map).value());
-  job.settings = {*format, *quality, parser.isSet(option::kMips), *zstdLevel,
-                  parser.isSet(option::kPerceptual)};
+  const std::optional<core::MipFilter> mipFilter =
+      core::findMipFilter(parser.value(option::kMipFilter).toStdString());
+  if (!mipFilter) {
+    printError(QStringLiteral("--mip-filter: '%1' is not box or kaiser")
+                   .arg(parser.value(option::kMipFilter)));
+    return kExitUsage;
+  }
+  job.settings = {*format,
+                  *quality,
+                  parser.isSet(option::kMips),
+                  *zstdLevel,
+                  parser.isSet(option::kPerceptual),
+                  *mipFilter};
   job.heightScale = *heightScale;
   job.measure = parser.isSet(option::kMetrics);
   if (const std::string problem = core::formatSlotProblem(*format, job.slot); !problem.empty()) {

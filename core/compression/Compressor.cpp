@@ -199,7 +199,7 @@ Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
   std::vector<Image> smaller;
   if (settings.mipmaps) {
     for (int i = 1, count = mipLevelCount(map.width(), map.height()); i < count; ++i)
-      smaller.push_back(downsampleForSlot(i == 1 ? map : smaller.back(), slot));
+      smaller.push_back(downsampleForSlot(i == 1 ? map : smaller.back(), slot, settings.mipFilter));
   }
   std::vector<const Image*> chain = {&map};
   for (const Image& level : smaller)

@@ -1,6 +1,6 @@
-// MipChain; see MipChain.h. Our own filter rather than ImageBufAlgo::resize: the colour and
-// normal steps need a per-texel transform around the average, and an exact area box over two
-// texels is all a mip level needs.
+// MipChain; see MipChain.h. Our own filters rather than ImageBufAlgo::resize: the colour and
+// normal steps need a per-texel transform around the average, the box is an exact area box over
+// two texels, and the Kaiser filter wraps around the edges as tiled maps need (resize clamps).
 #include "core/compression/MipChain.h"
 
 #include "core/base/ParallelFor.h"
@@ -60,7 +60,114 @@ Image boxDown(const Image& image, Decode decode, Encode encode) {
   return out;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kKaiserAlpha = 4.0;
+constexpr double kKaiserWidth = 3.0;  // destination texels on each side
+
+// The modified Bessel function of the first kind, order 0, by its series (converges fast for
+// the arguments a Kaiser window with alpha 4 gives).
+double besselI0(double x) {
+  double sum = 1.0, term = 1.0;
+  for (int k = 1; k < 30; ++k) {
+    term *= (x / (2.0 * k)) * (x / (2.0 * k));
+    sum += term;
+  }
+  return sum;
+}
+
+// Taps and weights of one destination texel along one axis, `from` texels shrinking to `to`:
+// sinc(t / scale) windowed by Kaiser(t / (scale * width)), t the source offset from the
+// destination texel's centre; source indices wrap.
+struct KaiserTaps {
+  std::vector<int> index;
+  std::vector<float> weight;
+};
+
+KaiserTaps kaiserTaps(int d, int from, int to) {
+  const double scale = double(from) / to;
+  const double centre = (d + 0.5) * scale - 0.5;
+  const double radius = kKaiserWidth * scale;
+  KaiserTaps taps;
+  double total = 0.0;
+  for (int s = int(std::ceil(centre - radius)); s <= int(std::floor(centre + radius)); ++s) {
+    const double t = (s - centre) / scale;
+    const double sinc = std::abs(t) < 1e-9 ? 1.0 : std::sin(kPi * t) / (kPi * t);
+    const double x = t / kKaiserWidth;
+    const double window =
+        besselI0(kKaiserAlpha * std::sqrt(std::max(0.0, 1.0 - x * x))) / besselI0(kKaiserAlpha);
+    taps.index.push_back(((s % from) + from) % from);
+    taps.weight.push_back(float(sinc * window));
+    total += sinc * window;
+  }
+  for (float& w : taps.weight)
+    w = float(w / total);
+  return taps;
+}
+
+// Kaiser filter, separable: the level decoded once (linear light, vectors), filtered along
+// rows then columns, encoded.
+template <class Decode, class Encode>
+Image kaiserDown(const Image& image, Decode decode, Encode encode) {
+  const int width = std::max(1, image.width() / 2), height = std::max(1, image.height() / 2);
+  const int channels = image.channels();
+  Image decoded = Image::forOverwrite(image.width(), image.height(), channels);
+  parallelFor(image.height(), [&](int y) {
+    for (int x = 0; x < image.width(); ++x)
+      decode(image.pixel(x, y), decoded.pixel(x, y));
+  });
+  std::vector<KaiserTaps> columnTaps, rowTaps;
+  for (int x = 0; x < width; ++x)
+    columnTaps.push_back(kaiserTaps(x, image.width(), width));
+  for (int y = 0; y < height; ++y)
+    rowTaps.push_back(kaiserTaps(y, image.height(), height));
+  Image across(width, image.height(), channels);
+  parallelFor(image.height(), [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const KaiserTaps& taps = columnTaps[std::size_t(x)];
+      float* target = across.pixel(x, y);
+      for (std::size_t k = 0; k < taps.index.size(); ++k) {
+        const float* source = decoded.pixel(taps.index[k], y);
+        for (int c = 0; c < channels; ++c)
+          target[c] += taps.weight[k] * source[c];
+      }
+    }
+  });
+  Image out(width, height, channels, image.colorSpace());
+  out.setSourceBitsPerChannel(image.sourceBitsPerChannel());
+  parallelFor(height, [&](int y) {
+    const KaiserTaps& taps = rowTaps[std::size_t(y)];
+    for (int x = 0; x < width; ++x) {
+      float* target = out.pixel(x, y);
+      for (std::size_t k = 0; k < taps.index.size(); ++k) {
+        const float* source = across.pixel(x, taps.index[k]);
+        for (int c = 0; c < channels; ++c)
+          target[c] += taps.weight[k] * source[c];
+      }
+      encode(target);
+    }
+  });
+  return out;
+}
+
+template <class Decode, class Encode>
+Image filterDown(const Image& image, MipFilter filter, Decode decode, Encode encode) {
+  return filter == MipFilter::Kaiser ? kaiserDown(image, decode, encode)
+                                     : boxDown(image, decode, encode);
+}
+
 }  // namespace
+
+std::string_view mipFilterName(MipFilter filter) {
+  return filter == MipFilter::Kaiser ? "kaiser" : "box";
+}
+
+std::optional<MipFilter> findMipFilter(std::string_view name) {
+  for (MipFilter filter : {MipFilter::Box, MipFilter::Kaiser}) {
+    if (mipFilterName(filter) == name)
+      return filter;
+  }
+  return std::nullopt;
+}
 
 int mipLevelCount(int width, int height) {
   int levels = 1;
@@ -72,25 +179,25 @@ int mipLevelCount(int width, int height) {
   return levels;
 }
 
-Image downsampleForSlot(const Image& image, MapSlot slot) {
+Image downsampleForSlot(const Image& image, MapSlot slot, MipFilter filter) {
   const int channels = image.channels();
   if (slot == MapSlot::Color) {
     const int colourChannels = std::min(3, channels);
-    return boxDown(
-        image,
+    return filterDown(
+        image, filter,
         [=](const float* in, float* out) {
           for (int c = 0; c < channels; ++c)
             out[c] = c < colourChannels ? srgbToLinear(in[c]) : in[c];
         },
         [=](float* texel) {
           for (int c = 0; c < colourChannels; ++c)
-            texel[c] = linearToSrgb(texel[c]);
+            texel[c] = linearToSrgb(std::clamp(texel[c], 0.0f, 1.0f));
         });
   }
   if (slot == MapSlot::Normal && channels >= 3) {
     // Average the unit vectors, then make the result unit length again (stored as 0.5 + 0.5 n).
-    return boxDown(
-        image,
+    return filterDown(
+        image, filter,
         [=](const float* in, float* out) {
           for (int c = 0; c < channels; ++c)
             out[c] = c < 3 ? in[c] * 2.0f - 1.0f : in[c];
@@ -103,16 +210,16 @@ Image downsampleForSlot(const Image& image, MapSlot slot) {
           }
         });
   }
-  return boxDown(
-      image, [=](const float* in, float* out) { std::copy(in, in + channels, out); },
+  return filterDown(
+      image, filter, [=](const float* in, float* out) { std::copy(in, in + channels, out); },
       [](float*) {});
 }
 
-std::vector<Image> buildMipChain(const Image& image, MapSlot slot) {
+std::vector<Image> buildMipChain(const Image& image, MapSlot slot, MipFilter filter) {
   std::vector<Image> chain;
   chain.push_back(image);
   while (chain.back().width() > 1 || chain.back().height() > 1)
-    chain.push_back(downsampleForSlot(chain.back(), slot));
+    chain.push_back(downsampleForSlot(chain.back(), slot, filter));
   return chain;
 }
 

@@ -5,6 +5,8 @@
 // preset parsing) reads these columns. Adding a format is one row here plus its codec.
 #pragma once
 
+#include "core/compression/MipChain.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -105,6 +107,8 @@ struct CompressionSettings {
   // BC1-BC3 colour error weighed by luminance (Rec. 709) instead of alike per channel. Uniform
   // is the default, as in libsquish and rgbcx, so PSNR compares across tools.
   bool perceptual = false;
+  // The mip chain's filter (MipChain.h): box, or Kaiser-windowed sinc. Not in presets yet.
+  MipFilter mipFilter = MipFilter::Box;
 
   bool operator==(const CompressionSettings&) const = default;
 };

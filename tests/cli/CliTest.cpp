@@ -608,6 +608,27 @@ TEST(Cli, GenerateMakesEveryMapAtFullPrecision) {
   EXPECT_NE(depth.out.find("relief depth"), std::string::npos) << depth.out;
 }
 
+// compress --mip-filter kaiser: the chain is written (the same size as the box's), and a name
+// that is no filter is refused before anything is written.
+TEST(Cli, CompressTakesTheKaiserMipFilter) {
+  const std::string folder = scratchFolder();
+  const QString colour = q(sourcePath("samples/tiles/tiles_color.png"));
+  CliRun kaiser = runCli({"compress", "--in", colour, "--format", "bc1", "--mips", "--mip-filter",
+                          "kaiser", "--out", q(folder + "/k.dds")});
+  ASSERT_EQ(kaiser.exitCode, 0) << kaiser.err;
+  CliRun box = runCli(
+      {"compress", "--in", colour, "--format", "bc1", "--mips", "--out", q(folder + "/b.dds")});
+  ASSERT_EQ(box.exitCode, 0) << box.err;
+  EXPECT_EQ(std::filesystem::file_size(folder + "/k.dds"),
+            std::filesystem::file_size(folder + "/b.dds"));
+  EXPECT_NE(readBytes(folder + "/k.dds"), readBytes(folder + "/b.dds"));
+  CliRun bad = runCli({"compress", "--in", colour, "--format", "bc1", "--mips", "--mip-filter",
+                       "lanczos", "--out", q(folder + "/x.dds")});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("not box or kaiser"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/x.dds"));
+}
+
 // generate tileable: a crop of a sample set (which no longer tiles) comes out as tiles under the
 // same names, at the inputs' bit depths, with the seams' numbers; an --out-dir that would write
 // over the inputs, and maps of different sizes, are refused with the files named and nothing
