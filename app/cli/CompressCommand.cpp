@@ -371,19 +371,20 @@ int runCompare(const QStringList& arguments) {
     printError(QStringLiteral("--normal needs RGB normal maps (0.5 + 0.5 n) on both sides"));
     return kExitFailure;
   }
+  core::Image flipError;
   core::CompressionReport report =
-      core::makeCompressionReport(reference.value(), image, slot, *heightScale);
+      core::makeCompressionReport(reference.value(), image, slot, *heightScale,
+                                  parser.isSet(option::kFlipMap) ? &flipError : nullptr);
   if (candidate->texture) {
     report.format = candidate->texture->format;
     report.size = core::measureSize(candidate->texture->format, reference->channels(),
                                     candidate->texture->byteSize());
   }
   if (parser.isSet(option::kFlipMap)) {
-    const core::FlipResult flip = core::measureFlip(reference.value(), image);
-    core::Image heat(flip.errorMap.width(), flip.errorMap.height(), 3, core::ColorSpace::Srgb);
+    core::Image heat(flipError.width(), flipError.height(), 3, core::ColorSpace::Srgb);
     for (int y = 0; y < heat.height(); ++y) {
       for (int x = 0; x < heat.width(); ++x) {
-        const glm::vec3 colour = core::heatmapColor(flip.errorMap.at(x, y, 0));
+        const glm::vec3 colour = core::heatmapColor(flipError.at(x, y, 0));
         for (int c = 0; c < 3; ++c)
           heat.at(x, y, c) = colour[c];
       }

@@ -154,7 +154,7 @@ int runTileable(const QStringList& arguments) {
     outputs << output;
   }
   for (std::size_t i = 0; i < images.size(); ++i) {
-    const bool normal = i > 0 && images[i].channels() >= 3 && !core::normalMapWarning(images[i]);
+    const bool normal = images[i].channels() >= 3 && !core::normalMapWarning(images[i]);
     maps.push_back({&images[i], normal ? core::TileMapRole::Normal : core::TileMapRole::Data});
   }
 
@@ -193,7 +193,7 @@ int runTileable(const QStringList& arguments) {
          {QStringLiteral("vertical"), axisJson(result->vertical, options.method)}});
     return kExitOk;
   }
-  for (std::size_t i = 1; i < maps.size(); ++i) {
+  for (std::size_t i = 0; i < maps.size(); ++i) {
     if (maps[i].role == core::TileMapRole::Normal)
       printNote(inputs[int(i)] + QStringLiteral(": blended as a normal map\n"));
   }

@@ -31,13 +31,15 @@ const char* kChannelNames[] = {"R", "G", "B", "A"};
 }  // namespace
 
 CompressionReport makeCompressionReport(const Image& reference, const Image& candidate,
-                                        MapSlot slot, double heightScale) {
+                                        MapSlot slot, double heightScale, Image* flipMap) {
   CompressionReport report;
   report.slot = slot;
   report.image = measureImageError(reference, candidate);
-  const FlipResult flip = measureFlip(reference, candidate);
+  FlipResult flip = measureFlip(reference, candidate);
   report.flip = flip.mean;
   report.flipP95 = flip.p95;
+  if (flipMap)
+    *flipMap = std::move(flip.errorMap);
   if (slot == MapSlot::Normal)
     report.normal = measureNormalError(reference, candidate);
   if (slot == MapSlot::Height) {

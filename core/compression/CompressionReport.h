@@ -30,9 +30,9 @@ struct CompressionReport {
 
 // `reference` and `candidate` must be the same size (checked by the caller: the message names
 // the files). For a normal map the angle is measured; for a height map the parallax shift at
-// `heightScale`.
+// `heightScale`. `flipMap`, when given, receives FLIP's per-pixel error (Flip.h).
 CompressionReport makeCompressionReport(const Image& reference, const Image& candidate,
-                                        MapSlot slot, double heightScale);
+                                        MapSlot slot, double heightScale, Image* flipMap = nullptr);
 
 // The figure "compare all formats" ranks by, larger is better: PSNR in dB for colour and data,
 // minus the mean angle in degrees for normals.

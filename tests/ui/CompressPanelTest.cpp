@@ -231,6 +231,21 @@ TEST_F(CompressPanelTest, TheCompareViewIsTexelExactAndShowsDifferences) {
   EXPECT_TRUE(dialog->thresholdBox()->isEnabled());
   const QImage thresholded = view->picture();
   EXPECT_GT(meanDifference(difference, thresholded), 0.0);
+  // The FLIP error, measured off the GUI thread, then a heat map unlike either difference
+  // picture; the gain applies to it (x100 saturates BC1's small error to red, x1 leaves it in
+  // the ramp's blue end).
+  dialog->modeBox()->setCurrentIndex(4);
+  EXPECT_EQ(view->mode(), ui::CompareView::Mode::Flip);
+  EXPECT_TRUE(dialog->gainSlider()->isEnabled());
+  view->waitForFlip();
+  const QImage flip = view->picture();
+  EXPECT_GT(meanDifference(flip, difference), 0.0);
+  EXPECT_GT(meanDifference(flip, thresholded), 0.0);
+  const QPoint middle = view->toWidget(QPointF(20.5, 30.5)).toPoint();
+  EXPECT_GT(flip.pixelColor(middle).red(), flip.pixelColor(middle).blue()) << "x100: saturated";
+  dialog->gainSlider()->setValue(1);
+  const QImage unamplified = view->picture();
+  EXPECT_GT(unamplified.pixelColor(middle).blue(), unamplified.pixelColor(middle).red());
   dialog->channelBox()->setCurrentIndex(2);  // green alone
   EXPECT_EQ(view->channel(), std::optional<int>(1));
   dialog->close();

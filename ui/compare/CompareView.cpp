@@ -5,7 +5,9 @@
 #include "core/compression/Flip.h"
 #include "core/image/Heatmap.h"
 #include "renderer/ImageConversion.h"
+#include "ui/tasks/BackgroundTask.h"
 
+#include <QCoreApplication>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
@@ -29,7 +31,7 @@ QString texelText(const core::Image& image, int x, int y) {
 
 }  // namespace
 
-CompareView::CompareView(QWidget* parent) : QWidget(parent) {
+CompareView::CompareView(QWidget* parent) : QWidget(parent), m_flipTask(new BackgroundTask(this)) {
   setMouseTracking(true);
   setMinimumSize(200, 150);
   setFocusPolicy(Qt::StrongFocus);
@@ -40,7 +42,9 @@ void CompareView::setImages(std::shared_ptr<const core::Image> original,
                             std::shared_ptr<const core::Image> compressed) {
   m_original = std::move(original);
   m_compressed = std::move(compressed);
+  m_flipTask->cancel();
   m_flipError.reset();
+  m_flipMap = {};
   m_userMoved = false;
   rebuild();
   fitToView();
@@ -90,12 +94,20 @@ void CompareView::rebuild() {
     m_difference = renderer::toDisplayImage(
         core::thresholdedDifference(*m_original, *m_compressed, m_threshold, m_channel),
         std::nullopt);
-  } else if (m_mode == Mode::Flip) {
-    if (!m_flipError) {
-      core::FlipResult flip = core::measureFlip(*m_original, *m_compressed);
-      m_flipMean = flip.mean;
-      m_flipError = std::move(flip.errorMap);
+  } else if (m_mode == Mode::Flip && !m_flipError) {
+    m_flipMap = {};
+    if (!m_flipTask->isRunning()) {
+      m_flipTask->run<core::FlipResult>(
+          [original = m_original, compressed = m_compressed](const core::WorkControl&) {
+            return core::measureFlip(*original, *compressed);
+          },
+          [this](core::FlipResult&& flip) {
+            m_flipMean = flip.mean;
+            m_flipError = std::move(flip.errorMap);
+            rebuild();
+          });
     }
+  } else if (m_mode == Mode::Flip) {
     // The gain spreads small errors over the ramp, as it amplifies the plain difference.
     m_flipMap = QImage(m_flipError->width(), m_flipError->height(), QImage::Format_RGB888);
     for (int y = 0; y < m_flipMap.height(); ++y) {
@@ -109,6 +121,12 @@ void CompareView::rebuild() {
     }
   }
   update();
+}
+
+void CompareView::waitForFlip() {
+  m_flipTask->waitForFinished();
+  while (m_flipTask->isRunning())
+    QCoreApplication::processEvents();
 }
 
 QPointF CompareView::toWidget(QPointF texel) const {
@@ -213,6 +231,11 @@ void CompareView::paintEvent(QPaintEvent*) {
       break;
     }
     case Mode::Flip:
+      if (m_flipMap.isNull()) {
+        drawLabel(painter, rect().adjusted(8, 8, -8, -8), Qt::AlignTop | Qt::AlignLeft,
+                  tr("Measuring FLIP…"));
+        break;
+      }
       painter.drawImage(target, m_flipMap);
       drawLabel(painter, rect().adjusted(8, 8, -8, -8), Qt::AlignTop | Qt::AlignLeft,
                 tr("FLIP x %1 (mean %2): navy none, red most")

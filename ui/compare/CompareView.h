@@ -1,11 +1,13 @@
 // CompareView: a 2D comparison of a map with its compressed version. Zoom (wheel, about the
 // cursor) and pan (drag) down to single texels, drawn without smoothing above 1:1 so every texel
 // is exact; modes: a wipe with a draggable divider (original left), side by side, the
-// difference amplified x1-x100, and the thresholded difference of reference 003's figures; any
+// difference amplified x1-x100, the thresholded difference of reference 003's figures, and the
+// FLIP error as a heat map (measured in the background: a large map takes seconds); any
 // mode can isolate one channel. Hovering shows the texel's values on both sides.
 #pragma once
 
 #include "core/image/Image.h"
+#include "ui/Forward.h"
 
 #include <QImage>
 #include <QPointF>
@@ -49,6 +51,8 @@ class CompareView : public QWidget {
 
   // What is drawn now, as an image the widget's size (for tests and saving).
   QImage picture();
+  // Blocks until the FLIP error in flight (if any) is shown (tests).
+  void waitForFlip();
 
   QSize sizeHint() const override { return {640, 480}; }
 
@@ -74,8 +78,9 @@ class CompareView : public QWidget {
 
   std::shared_ptr<const core::Image> m_original, m_compressed;
   QImage m_left, m_right, m_difference;
-  // The FLIP error, measured on first use per pair of images (it takes a moment), and its heat
+  // The FLIP error, measured in the background on first use per pair of images, and its heat
   // map at the current gain.
+  BackgroundTask* m_flipTask;
   std::optional<core::Image> m_flipError;
   QImage m_flipMap;
   double m_flipMean = 0.0;
