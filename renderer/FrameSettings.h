@@ -2,6 +2,7 @@
 // debug view, what kind of values to write, and the optional A/B split comparison.
 #pragma once
 
+#include "core/exporters/EnginePreview.h"
 #include "core/material/Material.h"
 #include "core/view/DebugView.h"
 #include "renderer/RenderView.h"
@@ -36,6 +37,9 @@ struct FrameSettings {
   RenderView view;
   core::DebugView debugView = core::DebugView::Shading;
   TilePreview tiles;
+  // An engine preview: the relief traced as that engine's exported material traces it
+  // (core/exporters/EnginePreview.h, shaders/include/engine_parallax.glsl); none: Relief's own.
+  std::optional<core::Engine> engine;
   FrameOutput output = FrameOutput::Display;
   std::optional<SplitComparison> split;
 };

@@ -151,12 +151,13 @@ int MaterialRenderer::maxImageSize() {
 
 ShaderProgram* MaterialRenderer::programFor(const core::Material& material,
                                             const FrameSettings& frame, std::string& error) {
-  const std::vector<std::string> defines =
-      materialShaderDefines(material, frame.debugView, frame.output, frame.tiles.hex);
+  const std::optional<core::EngineTraceParams> engine = engineTraceFor(material, frame);
+  const std::vector<std::string> defines = materialShaderDefines(
+      material, frame.debugView, frame.output, frame.tiles.hex, engine ? &*engine : nullptr);
   std::unique_ptr<ShaderProgram>& program = m_materialPrograms[joined(defines)];
   if (!program) {
     ShaderStagePaths paths{"material.vert", "material.frag", {}, {}};
-    if (usesTessellation(material, frame.output)) {
+    if (usesTessellation(material, frame.output, engine.has_value())) {
       paths.tessellationControl = "material.tesc";
       paths.tessellationEvaluation = "material.tese";
     }
@@ -227,6 +228,13 @@ core::Status MaterialRenderer::render(const FrameSettings& frame, int width, int
   return {};
 }
 
+std::optional<core::EngineTraceParams> MaterialRenderer::engineTraceFor(
+    const core::Material& material, const FrameSettings& frame) {
+  if (!frame.engine)
+    return std::nullopt;
+  return core::engineTrace(material, *frame.engine);
+}
+
 const core::Material& MaterialRenderer::drawable(const core::Material& material,
                                                  core::Material& standIn) const {
   if (coneMapReady(material))
@@ -244,13 +252,21 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   for (MapSlot slot : core::kAllMapSlots) {
     m_textures.texture(material, slot).bind(unsigned(kFirstMapUnit + int(slot)));
   }
-  if (core::isExactTracing(material.technique())) {
+  const std::optional<core::EngineTraceParams> engine = engineTraceFor(material, frame);
+  if (engine) {
+    program.setUniformValue("uEngineDepth", float(engine->depth));
+    program.setUniformValue("uEngineMinSteps", float(engine->minSteps));
+    program.setUniformValue("uEngineMaxSteps", float(engine->maxSteps));
+    program.setUniformValue("uEngineReferencePlane", float(engine->referencePlane));
+    program.setUniformValue("uEngineLodThreshold", float(engine->lodThreshold));
+  }
+  if (!engine && core::isExactTracing(material.technique())) {
     QOpenGLTexture& pyramid = m_textures.heightPyramid(material);
     pyramid.bind(unsigned(kPyramidUnit));
     program.setUniformValue("uHeightPyramid", kPyramidUnit);
     program.setUniformValue("uHeightPyramidLevels", pyramid.mipLevels());
   }
-  if (material.technique() == core::Technique::Cone) {
+  if (!engine && material.technique() == core::Technique::Cone) {
     m_textures.coneMap(material).bind(unsigned(kConeMapUnit));
     program.setUniformValue("uConeMap", kConeMapUnit);
   }
@@ -273,7 +289,7 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   glClear(GL_DEPTH_BUFFER_BIT);
   // Both sides are drawn: an open mesh (the plane) must not vanish when orbiting below it.
   glDisable(GL_CULL_FACE);
-  if (usesTessellation(material, frame.output)) {
+  if (usesTessellation(material, frame.output, engine.has_value())) {
     // Tessellated draws are issued a few patches at a time. Mesa's llvmpipe (22.3, Debian 12)
     // silently drops the rest of a draw that generates too many triangles (512 patches at
     // level 32, about 520k triangles, lost the later patches; at level 16 all were drawn), and

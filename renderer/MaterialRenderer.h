@@ -113,6 +113,9 @@ class MaterialRenderer : protected QOpenGLExtraFunctions {
   void prepareEnvironment(const FrameSettings& frame);
   void drawBackground(const RenderView& view, int width, int height);
   void bindEnvironment(QOpenGLShaderProgram& program, const core::Environment& environment);
+  // The engine preview's trace for this material, when the frame asks for one.
+  static std::optional<core::EngineTraceParams> engineTraceFor(const core::Material& material,
+                                                               const FrameSettings& frame);
   // `material`, or `standIn` set to it with the quadtree while its cone map is being built.
   const core::Material& drawable(const core::Material& material, core::Material& standIn) const;
   void createSplitSumTable();  // pbr shading's (A, B) table (core/shading/SplitSumLut.h)

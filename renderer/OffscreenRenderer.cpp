@@ -117,4 +117,11 @@ core::Result<ErrorViewInputs> OffscreenRenderer::renderErrorViewInputs(const Fra
   return relief::renderer::renderErrorViewInputs(*m_renderer, frame, width, height);
 }
 
+core::Result<std::vector<EngineGridPanelRender>> OffscreenRenderer::renderEngineGridPanels(
+    const FrameSettings& frame, int panelWidth, int panelHeight) {
+  if (!makeCurrent())
+    return core::makeError("cannot make the offscreen OpenGL context current");
+  return relief::renderer::renderEngineGridPanels(*m_renderer, frame, panelWidth, panelHeight);
+}
+
 }  // namespace relief::renderer

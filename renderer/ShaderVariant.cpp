@@ -41,9 +41,63 @@ bool hexTilingApplies(const core::Material& material, core::DebugView view, Fram
          view != core::DebugView::Error && output != FrameOutput::EyeRays;
 }
 
+namespace {
+
+std::string_view engineTraceDefine(core::EngineTrace trace) {
+  switch (trace) {
+    case core::EngineTrace::None:
+      return {};
+    case core::EngineTrace::GodotOffset:
+      return "ENGINE_GODOT_OFFSET";
+    case core::EngineTrace::GodotDeep:
+      return "ENGINE_GODOT_DEEP";
+    case core::EngineTrace::UnrealPom:
+      return "ENGINE_UNREAL_POM";
+    case core::EngineTrace::UrpOffset:
+      return "ENGINE_URP_OFFSET";
+    case core::EngineTrace::HdrpPom:
+      return "ENGINE_HDRP_POM";
+  }
+  return {};
+}
+
+// An engine preview compiles the engine's trace alone: no Relief technique (the normal
+// technique's define reads no height), no self-shadowing (no engine material has it), no
+// hex-tiling or UV clamping (Relief's view and edge options, not the engine's), and the depth
+// written only where the engine writes it.
+std::vector<std::string> engineShaderDefines(const core::Material& material,
+                                             const core::EngineTraceParams& engine,
+                                             core::DebugView view, FrameOutput output) {
+  std::vector<std::string> defines = {
+      std::string(core::techniqueShaderDefine(core::Technique::Normal)), "ENGINE_PREVIEW"};
+  if (const std::string_view trace = engineTraceDefine(engine.trace); !trace.empty())
+    defines.emplace_back(trace);
+  if (material.parameterFlag(core::ParamId::HeightInNormalAlpha))
+    defines.emplace_back("HEIGHT_IN_NORMAL_ALPHA");
+  if (core::ShadingModel(int(material.parameter(core::ParamId::Shading))) ==
+      core::ShadingModel::Pbr)
+    defines.emplace_back("SHADING_PBR");
+  if (output == FrameOutput::EyeRays) {
+    defines.emplace_back("DEBUG_VIEW VIEW_RAY");
+    return defines;
+  }
+  if (engine.depthOffset && material.parameterFlag(core::ParamId::DepthOffset))
+    defines.emplace_back("DEPTH_OFFSET");
+  const core::DebugView shaderView = view == core::DebugView::Error ? core::DebugView::Uv : view;
+  defines.push_back("DEBUG_VIEW " + std::to_string(int(shaderView)));
+  if (output == FrameOutput::FloatData)
+    defines.emplace_back("FLOAT_OUTPUT");
+  return defines;
+}
+
+}  // namespace
+
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
-                                               FrameOutput output, bool hexTiling) {
+                                               FrameOutput output, bool hexTiling,
+                                               const core::EngineTraceParams* engine) {
   using core::ParamId;
+  if (engine != nullptr)
+    return engineShaderDefines(material, *engine, view, output);
   std::vector<std::string> defines = {
       std::string(core::techniqueShaderDefine(material.technique()))};
   const auto shadowMode = core::ShadowMode(int(material.parameter(ParamId::ShadowMode)));
@@ -78,8 +132,9 @@ std::vector<std::string> materialShaderDefines(const core::Material& material, c
   return defines;
 }
 
-bool usesTessellation(const core::Material& material, FrameOutput output) {
-  return material.technique() == core::Technique::Displacement && output != FrameOutput::EyeRays;
+bool usesTessellation(const core::Material& material, FrameOutput output, bool enginePreview) {
+  return material.technique() == core::Technique::Displacement && output != FrameOutput::EyeRays &&
+         !enginePreview;
 }
 
 }  // namespace relief::renderer

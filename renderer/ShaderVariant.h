@@ -3,6 +3,7 @@
 // Everything else is a uniform, so dragging a slider never recompiles.
 #pragma once
 
+#include "core/exporters/EnginePreview.h"
 #include "core/material/Material.h"
 #include "core/view/DebugView.h"
 #include "renderer/FrameSettings.h"
@@ -14,8 +15,11 @@ namespace relief::renderer {
 
 // The #defines for material.vert/frag, in a fixed order (the list doubles as a cache key).
 // `hexTiling`: the view asks for hex-tiling (HEX_TILING, where it applies; FrameSettings.h).
+// `engine`: an engine preview's trace (core/exporters/EnginePreview.h), which replaces the
+// technique, the self-shadowing and the view options with what the engine does.
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
-                                               FrameOutput output, bool hexTiling = false);
+                                               FrameOutput output, bool hexTiling = false,
+                                               const core::EngineTraceParams* engine = nullptr);
 
 // Whether hex-tiling applies to this material and view (the technique, repeating UVs, not the
 // error view or the eye rays).
@@ -31,7 +35,9 @@ const std::vector<std::string>& materialTableDefines();
 
 // Whether the program has the tessellation stages (material.tesc/tese) and draws patches: the
 // displacement technique, except for the eye-ray output, which wants the rays' entry points on
-// the undisplaced mesh (the exact tracer starts there).
-bool usesTessellation(const core::Material& material, FrameOutput output);
+// the undisplaced mesh (the exact tracer starts there), and engine previews (engines trace
+// the relief on the flat mesh).
+bool usesTessellation(const core::Material& material, FrameOutput output,
+                      bool enginePreview = false);
 
 }  // namespace relief::renderer

@@ -9,6 +9,9 @@
 #include "include/tangent_space.glsl"
 #include "include/height.glsl"
 #include "include/parallax.glsl"
+#ifdef ENGINE_PREVIEW
+#include "include/engine_parallax.glsl"
+#endif
 #include "include/self_shadow.glsl"
 #include "include/normal_mapping.glsl"
 #include "include/lighting.glsl"
@@ -60,8 +63,15 @@ void main() {
   return;
 #endif
 
-  // Fade the relief out where the height map is read at a coarse mip level.
   float mipLevel = heightMipLevel(entryUv);
+#ifdef ENGINE_PREVIEW
+  // The engine's own trace, fade and all (engine_parallax.glsl); Relief's fade is not the
+  // engine's. Scale and bias stay Relief's: the export's conversions make them the same relief.
+  float scale = uHeightScale;
+  float bias = uHeightBias;
+  ParallaxResult visible = engineVisiblePoint(entryUv, V, dx, dy);
+#else
+  // Fade the relief out where the height map is read at a coarse mip level.
   float fade = uLodFade > 0.0 ? 1.0 - smoothstep(uLodFade - 1.0, uLodFade, mipLevel) : 1.0;
   float scale = uHeightScale * fade;
   float bias = uHeightBias * fade;
@@ -74,6 +84,7 @@ void main() {
     visible.height = sampleHeight(entryUv, dx, dy);
     visible.samples = 1;
   }
+#endif
 
 #ifdef UV_EDGE_CLAMP
   vec2 meshUv = visible.uv / uTiling;

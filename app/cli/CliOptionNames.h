@@ -12,6 +12,7 @@ inline const QString kAlso = QStringLiteral("also");
 inline const QString kBackground = QStringLiteral("background");
 inline const QString kCheck = QStringLiteral("check");
 inline const QString kDistance = QStringLiteral("distance");
+inline const QString kEngine = QStringLiteral("engine");
 inline const QString kEnvironment = QStringLiteral("environment");
 inline const QString kEnvironmentIntensity = QStringLiteral("environment-intensity");
 inline const QString kEnvironmentRotation = QStringLiteral("environment-rotation");

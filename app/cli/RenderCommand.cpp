@@ -8,6 +8,7 @@
 #include "RenderLighting.h"
 
 #include "core/compression/MapFile.h"
+#include "core/exporters/EnginePreview.h"
 #include "core/image/ImageFileTypes.h"
 #include "core/image/ImageIO.h"
 #include "core/mesh/MeshImport.h"
@@ -15,6 +16,7 @@
 #include "core/preset/MaterialPreset.h"
 #include "core/preset/OrmTexture.h"
 #include "core/tracing/UvErrorMap.h"
+#include "renderer/EngineGrid.h"
 #include "renderer/ErrorView.h"
 #include "renderer/HeatmapLegend.h"
 #include "renderer/ImageConversion.h"
@@ -24,6 +26,7 @@
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QImage>
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QPainter>
 #include <QRegularExpression>
@@ -50,6 +53,13 @@ QString parameterHelp() {
 // --roughness, --metallic.
 QString mapOptionName(core::MapSlot slot) {
   return qstr(core::mapSlotName(slot));
+}
+
+QString enginesList() {
+  QStringList names;
+  for (const core::EngineInfo& info : core::allEngines())
+    names << qstr(info.name);
+  return names.join(QStringLiteral(", "));
 }
 
 CliOptions renderOptions() {
@@ -121,6 +131,15 @@ CliOptions renderOptions() {
                      QStringLiteral("Hex-tiling against visible repetition (the GUI's Hex): "
                                     "not with cone, quadtree or displacement."),
                      {}});
+  options.push_back({option::kEngine,
+                     QStringLiteral("name|grid"),
+                     QStringLiteral("Trace the relief as that engine's exported material does: ") +
+                         enginesList() +
+                         QStringLiteral(" (docs/techniques.md, \"Engine previews\"). grid: "
+                                        "Relief's exact trace and every engine side by side, "
+                                        "each with its UV error against the exact trace "
+                                        "(printed too; --size is one panel's)."),
+                     {}});
   for (CliOption& option : lightingOptions())
     options.push_back(std::move(option));
   options.push_back(strictOption(QStringLiteral("rendering")));
@@ -148,6 +167,7 @@ CliOptions renderOptions() {
 }
 
 struct RenderRequest {
+  bool engineGrid = false;  // --engine grid
   core::Material material;
   core::Mesh mesh;
   renderer::FrameSettings frame;
@@ -368,6 +388,16 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
   if (!repeats)
     return kExitUsage;
   request.frame.tiles = {*repeats, parser.isSet(option::kSeams), parser.isSet(option::kHex)};
+  if (parser.isSet(option::kEngine)) {
+    const QString engine = parser.value(option::kEngine);
+    request.engineGrid = engine == QStringLiteral("grid");
+    request.frame.engine = core::findEngine(engine.toStdString());
+    if (!request.engineGrid && !request.frame.engine) {
+      printError(
+          QStringLiteral("--engine %1: expected grid or one of %2").arg(engine, enginesList()));
+      return kExitUsage;
+    }
+  }
   return std::nullopt;
 }
 
@@ -479,6 +509,32 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   return resolveView(parser, request);
 }
 
+// The engine grid (renderer/EngineGrid.h): prints each panel's UV error against the exact
+// trace and returns the captioned picture, a panel of --size each.
+core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscreen,
+                                           const RenderRequest& request, QJsonObject& report) {
+  auto panels = offscreen.renderEngineGridPanels(request.frame, request.width, request.height);
+  if (!panels)
+    return core::makeError(panels.error());
+  renderer::EngineGrid grid = renderer::composeEngineGrid(panels.value());
+  QJsonArray rows;
+  for (const renderer::EngineGridPanel& panel : grid.panels) {
+    rows.append(QJsonObject{
+        {QStringLiteral("engine"),
+         panel.engine ? qstr(core::engineInfo(*panel.engine).name) : QStringLiteral("relief")},
+        {QStringLiteral("label"), QString::fromStdString(panel.label)},
+        {QStringLiteral("uvErrorTexels"),
+         QJsonObject{{QStringLiteral("mean"), panel.error.mean},
+                     {QStringLiteral("p95"), panel.error.p95},
+                     {QStringLiteral("max"), panel.error.maximum},
+                     {QStringLiteral("pixels"), double(panel.error.pixels)}}}});
+  }
+  report.insert(QStringLiteral("panels"), rows);
+  if (!request.json)
+    printOut(QString::fromStdString(renderer::describeEngineGrid(grid)));
+  return std::move(grid.picture);
+}
+
 }  // namespace
 
 namespace {
@@ -509,7 +565,9 @@ int renderRequest(renderer::OffscreenRenderer& offscreen, const RenderRequest& r
   offscreen.setMesh(request.mesh);
   offscreen.setMaterial(request.material);
   QJsonObject report;
-  core::Result<core::Image> image = request.frame.debugView == core::DebugView::Error
+  core::Result<core::Image> image = request.engineGrid
+                                        ? renderEngineGrid(offscreen, request, report)
+                                    : request.frame.debugView == core::DebugView::Error
                                         ? renderErrorView(offscreen, request, report)
                                         : renderView(offscreen, request);
   if (!image) {
@@ -544,6 +602,8 @@ int renderRequest(renderer::OffscreenRenderer& offscreen, const RenderRequest& r
     report.insert(QStringLiteral("view"), qstr(core::debugViewName(request.frame.debugView)));
     report.insert(QStringLiteral("technique"),
                   qstr(core::techniqueName(request.material.technique())));
+    if (request.frame.engine)
+      report.insert(QStringLiteral("engine"), qstr(core::engineInfo(*request.frame.engine).name));
     printJson(report);
   }
   return kExitOk;

@@ -3,6 +3,7 @@
 
 #include "core/base/AtomicFile.h"
 #include "core/exporters/EngineConversion.h"
+#include "core/exporters/EnginePreview.h"
 #include "core/exporters/PackageExport.h"
 #include "core/image/ImageIO.h"
 
@@ -88,19 +89,18 @@ void writeGodotHeightmap(std::ostream& tres, const Material& material, const std
                          std::vector<std::string>& notes) {
   const double scale = material.parameter(ParamId::HeightScale);
   const double bias = material.parameter(ParamId::HeightBias);
-  const bool deep = isOccludingRelief(material.technique());
+  const GodotHeightmap heightmap = godotHeightmap(material);
+  const bool deep = heightmap.deepParallax;
   tres << "heightmap_enabled = true\n";
-  // Godot offsets texture coordinates by view.xy * heightmap_scale * 0.01 at full depth.
-  tres << "heightmap_scale = " << number(scale * 100.0) << "\n";
+  tres << "heightmap_scale = " << number(heightmap.scale) << "\n";
   tres << "heightmap_deep_parallax = " << boolean(deep) << "\n";
   if (deep) {
-    tres << "heightmap_min_layers = " << int(material.parameter(ParamId::MinSamples)) << "\n";
-    tres << "heightmap_max_layers = " << int(material.parameter(ParamId::MaxSamples)) << "\n";
+    tres << "heightmap_min_layers = " << heightmap.minLayers << "\n";
+    tres << "heightmap_max_layers = " << heightmap.maxLayers << "\n";
   }
   tres << "heightmap_flip_tangent = false\n";
   tres << "heightmap_flip_binormal = false\n";
-  tres << "heightmap_flip_texture = " << boolean(material.parameterFlag(ParamId::HeightIsDepth))
-       << "\n";
+  tres << "heightmap_flip_texture = " << boolean(heightmap.flipTexture) << "\n";
   tres << "heightmap_texture = ExtResource(\"" << heightId << "\")\n";
   if (std::abs(bias + scale) > 1e-6) {
     notes.push_back("Godot puts the top of the relief on the surface; heightBias " + number(bias) +
@@ -167,6 +167,8 @@ Result<EngineExportResult> exportGodot(const Preset& preset, const std::string& 
   }
   if (parallax)
     writeGodotHeightmap(tres, material, idOf("height"), result.notes);
+  for (std::string& loss : engineLosses(material, Engine::Godot))
+    result.notes.push_back(std::move(loss));
   const double tiling = material.parameter(ParamId::Tiling);
   tres << "uv1_scale = Vector3(" << number(tiling) << ", " << number(tiling) << ", 1.0)\n";
 

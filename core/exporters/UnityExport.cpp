@@ -19,7 +19,6 @@ constexpr const char* kUrpLitShaderGuid = "933532a4fcc9baf4fa0491de14d08ed7";
 constexpr const char* kHdrpLitShaderGuid = "6e4ae4064600d784cac1e41a9e6f2e59";
 
 // HDRP Lit's sample counts for pixel displacement are sliders of 1..64.
-constexpr int kHdrpMaxSamples = 64;
 
 struct UnityTexture {
   std::string property;  // the shader property, e.g. _BaseMap
@@ -280,30 +279,25 @@ void setHdrpProperties(const Material& material, bool parallax, UnityMaterial& m
     mat.floats.push_back({std::string(remap) + "Max", 1.0});
   }
   if (parallax) {
-    constexpr double kPrimitiveMetres = 1.0;
-    const double amplitudeCm = hdrpPomAmplitudeCentimetres(scale, kPrimitiveMetres);
+    const HdrpPixelDisplacement ppd = hdrpPixelDisplacement(material);
     const bool deep = isOccludingRelief(material.technique());
-    const auto samples = [&](ParamId id) {
-      return double(std::clamp(int(material.parameter(id)), 1, kHdrpMaxSamples));
-    };
     mat.keywords.push_back("_HEIGHTMAP");
     mat.keywords.push_back("_PIXEL_DISPLACEMENT");
     mat.floats.push_back({"_DisplacementMode", 2.0});  // pixel displacement: HDRP's POM
-    mat.floats.push_back({"_HeightPoMAmplitude", amplitudeCm});
+    mat.floats.push_back({"_HeightPoMAmplitude", ppd.amplitudeCm});
     // What HDRP's material editor derives from the amplitude, set here so the material is
     // right before anyone opens it: metres, and the top of the relief on the surface.
-    mat.floats.push_back({"_HeightAmplitude", amplitudeCm * 0.01});
+    mat.floats.push_back({"_HeightAmplitude", ppd.amplitudeCm * 0.01});
     mat.floats.push_back({"_HeightCenter", 1.0});
-    mat.floats.push_back({"_PPDPrimitiveLength", kPrimitiveMetres});
-    mat.floats.push_back({"_PPDPrimitiveWidth", kPrimitiveMetres});
+    mat.floats.push_back({"_PPDPrimitiveLength", ppd.primitiveMetres});
+    mat.floats.push_back({"_PPDPrimitiveWidth", ppd.primitiveMetres});
     mat.colors.push_back({"_InvPrimScale", "{r: 1, g: 1, b: 0, a: 0}"});
-    mat.floats.push_back({"_DisplacementLockTilingScale", 1.0});
-    mat.floats.push_back({"_PPDMinSamples", deep ? samples(ParamId::MinSamples) : 1.0});
-    mat.floats.push_back({"_PPDMaxSamples", deep ? samples(ParamId::MaxSamples) : 1.0});
-    mat.floats.push_back({"_PPDLodThreshold", 5.0});
-    const bool depthOffset = material.parameterFlag(ParamId::DepthOffset);
-    mat.floats.push_back({"_DepthOffsetEnable", depthOffset ? 1.0 : 0.0});
-    if (depthOffset)
+    mat.floats.push_back({"_DisplacementLockTilingScale", ppd.lockTilingScale ? 1.0 : 0.0});
+    mat.floats.push_back({"_PPDMinSamples", ppd.minSamples});
+    mat.floats.push_back({"_PPDMaxSamples", ppd.maxSamples});
+    mat.floats.push_back({"_PPDLodThreshold", ppd.lodThreshold});
+    mat.floats.push_back({"_DepthOffsetEnable", ppd.depthOffset ? 1.0 : 0.0});
+    if (ppd.depthOffset)
       mat.keywords.push_back("_DEPTHOFFSET_ON");
     notes.push_back(
         "HDRP measures the relief in centimetres on a primitive of _PPDPrimitiveLength x "
@@ -326,17 +320,6 @@ void setHdrpProperties(const Material& material, bool parallax, UnityMaterial& m
 
 }  // namespace
 
-double urpParallaxAmplitude(double heightScale) {
-  // Head-on view.z -> 1: (h A - A/2) / 1.42 must equal Relief's h * heightScale (+ bias).
-  return 1.42 * heightScale;
-}
-
-double hdrpPomAmplitudeCentimetres(double heightScale, double primitiveMetres) {
-  // HDRP's uvSpaceScale = tiling * (amplitude / tiling) / primitive: the offset at full depth,
-  // view.xy / view.z * amplitude / primitive, in tiled texture widths, as heightScale is.
-  return 100.0 * heightScale * primitiveMetres;
-}
-
 Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& folder,
                                        UnityPipeline pipeline) {
   if (Status made = makeExportFolder(folder); !made)
@@ -354,6 +337,8 @@ Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& 
   std::optional<Image> masks;
   if (Status written = writeUnityTextures(writer, material, urp, mat, masks); !written)
     return makeError(written.error());
+  for (std::string& loss : engineLosses(material, urp ? Engine::Unity : Engine::UnityHdrp))
+    result.notes.push_back(std::move(loss));
 
   // Relief's smoothness when no map carries it: Unity's smoothness is 1 - perceptual roughness.
   // With a map, URP multiplies the map's alpha by _Smoothness and HDRP remaps the mask's alpha

@@ -8,6 +8,7 @@
 
 #include "core/base/Result.h"
 #include "core/exporters/EngineConversion.h"
+#include "core/exporters/EnginePreview.h"
 #include "core/preset/MaterialPreset.h"
 
 #include <string>
@@ -19,14 +20,5 @@ enum class UnityPipeline { Urp, Hdrp };
 // Writes <folder>/<name>.mat, <name>_<map>.png and a .meta for each (GUIDs stable per name).
 Result<EngineExportResult> exportUnity(const Preset& preset, const std::string& folder,
                                        UnityPipeline pipeline);
-
-// URP's ParallaxOffset1Step offsets by (h * A - A / 2) * view.xy / (view.z + 0.42): the
-// amplitude A (the material's _Parallax) that matches Relief's offset head-on.
-double urpParallaxAmplitude(double heightScale);
-
-// HDRP's _HeightPoMAmplitude (centimetres) for Relief's heightScale (texture widths), on a
-// primitive whose texture spans `primitiveMetres` (the material's _PPDPrimitiveLength), with
-// HDRP's default of scaling the displacement with the tiling.
-double hdrpPomAmplitudeCentimetres(double heightScale, double primitiveMetres);
 
 }  // namespace relief::core::inline exporters

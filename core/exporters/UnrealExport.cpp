@@ -31,16 +31,15 @@ QJsonObject unrealParallax(const Material& material, std::vector<std::string>& n
   const double scale = material.parameter(ParamId::HeightScale);
   const double bias = material.parameter(ParamId::HeightBias);
   const bool deep = isOccludingRelief(material.technique());
-  // Epic's function marches view.xy / view.z scaled by Height Ratio (the depth as a fraction of
-  // the texture's width) in the UVs it is given: Relief's heightScale in tiled texture widths.
+  const UnrealPom pom = unrealPom(material);
   QJsonObject parallax{
       {QStringLiteral("function"), QString::fromLatin1(kPomFunction)},
-      {QStringLiteral("HeightRatio"), scale},
-      {QStringLiteral("MinSteps"), deep ? material.parameter(ParamId::MinSamples) : 1.0},
-      {QStringLiteral("MaxSteps"), deep ? material.parameter(ParamId::MaxSamples) : 1.0},
-      {QStringLiteral("ReferencePlane"), unrealReferencePlane(scale, bias)},
+      {QStringLiteral("HeightRatio"), pom.heightRatio},
+      {QStringLiteral("MinSteps"), pom.minSteps},
+      {QStringLiteral("MaxSteps"), pom.maxSteps},
+      {QStringLiteral("ReferencePlane"), pom.referencePlane},
       {QStringLiteral("HeightmapChannel"), QJsonArray{1, 0, 0, 0}},
-      {QStringLiteral("PixelDepthOffset"), material.parameterFlag(ParamId::DepthOffset)},
+      {QStringLiteral("PixelDepthOffset"), pom.pixelDepthOffset},
       {QStringLiteral("inputs"),
        QJsonObject{{QStringLiteral("HeightRatio"), QStringLiteral("Height Ratio")},
                    {QStringLiteral("MinSteps"), QStringLiteral("Min Steps")},
@@ -58,7 +57,7 @@ QJsonObject unrealParallax(const Material& material, std::vector<std::string>& n
   if (plane < 0.0 || plane > 1.0) {
     notes.push_back("heightBias " + engineNumber(bias) +
                     " puts the surface outside the relief; Reference Plane clamped to " +
-                    engineNumber(unrealReferencePlane(scale, bias)));
+                    engineNumber(pom.referencePlane));
   }
   return parallax;
 }
@@ -75,12 +74,6 @@ Status writeImportScript(const std::filesystem::path& directory, const std::stri
 }
 
 }  // namespace
-
-double unrealReferencePlane(double heightScale, double heightBias) {
-  if (heightScale <= 0.0)
-    return 1.0;
-  return std::clamp(-heightBias / heightScale, 0.0, 1.0);
-}
 
 Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string& folder) {
   if (Status made = makeExportFolder(folder); !made)
@@ -147,6 +140,8 @@ Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string&
       return makeError(s.error());
     root.insert(QStringLiteral("parallax"), unrealParallax(material, result.notes));
   }
+  for (std::string& loss : engineLosses(material, Engine::Unreal))
+    result.notes.push_back(std::move(loss));
   if (material.parameter(ParamId::NormalStrength) != 1.0 && material.hasMap(MapSlot::Normal)) {
     result.notes.push_back("normalStrength " +
                            engineNumber(material.parameter(ParamId::NormalStrength)) +

@@ -8,6 +8,7 @@
 
 #include "core/base/Result.h"
 #include "core/exporters/EngineConversion.h"
+#include "core/exporters/EnginePreview.h"
 #include "core/preset/MaterialPreset.h"
 
 #include <string>
@@ -16,9 +17,5 @@ namespace relief::core::inline exporters {
 
 // Writes the textures, <name>_unreal.json (the result's mainPath) and <name>_unreal_import.py.
 Result<EngineExportResult> exportUnreal(const Preset& preset, const std::string& folder);
-
-// The ParallaxOcclusionMapping function's Reference Plane: the height (0 bottom, 1 top) that
-// lies on the mesh's surface. Relief's surface is s = h * scale + bias, so it is -bias / scale.
-double unrealReferencePlane(double heightScale, double heightBias);
 
 }  // namespace relief::core::inline exporters

@@ -254,6 +254,49 @@ TEST(Cli, RenderStatsCountHeightSamplesPerCoveredPixel) {
             5.0);
 }
 
+// --engine grid: Relief's exact trace and the four engine previews side by side, each with its
+// UV error against the exact trace; the exact panel's is zero, the engines' are not (bricks, a
+// close grazing view where the map is magnified). A bad engine name is a usage error.
+TEST(Cli, RenderEngineGridReportsEachEnginesUvError) {
+  const std::string out = scratchFolder() + "/engine-grid.png";
+  CliRun run =
+      runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--out"), q(out),
+              QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--pitch"),
+              QStringLiteral("20"), QStringLiteral("--distance"), QStringLiteral("0.3"),
+              QStringLiteral("--engine"), QStringLiteral("grid"), QStringLiteral("--json")});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const QJsonArray panels = QJsonDocument::fromJson(QByteArray::fromStdString(run.out))
+                                .object()
+                                .value(QStringLiteral("panels"))
+                                .toArray();
+  ASSERT_EQ(panels.size(), 5);
+  QStringList engines;
+  for (const QJsonValue& panel : panels) {
+    const QJsonObject error = panel.toObject().value(QStringLiteral("uvErrorTexels")).toObject();
+    engines << panel.toObject().value(QStringLiteral("engine")).toString();
+    EXPECT_GT(error.value(QStringLiteral("pixels")).toDouble(), 1000.0)
+        << engines.back().toStdString();
+    if (engines.size() == 1)
+      EXPECT_LT(error.value(QStringLiteral("mean")).toDouble(), 0.01);
+    else
+      EXPECT_GT(error.value(QStringLiteral("mean")).toDouble(), 0.02)
+          << engines.back().toStdString();
+  }
+  EXPECT_EQ(engines.join(','), QStringLiteral("relief,godot,unreal,unity,unity-hdrp"));
+  core::Result<core::Image> image = core::loadImage(out);
+  ASSERT_TRUE(image.ok()) << image.error();
+  EXPECT_EQ(image->width(), 5 * 160 + 4 * 4);
+  EXPECT_EQ(image->height(), 120);
+
+  CliRun bad = runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--out"),
+                       q(scratchFolder() + "/bad-engine.png"), QStringLiteral("--engine"),
+                       QStringLiteral("cryengine")});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--engine cryengine: expected grid or one of godot, unreal"),
+            std::string::npos)
+      << bad.err;
+}
+
 TEST(Cli, RenderTakesMapsAndParametersAndViewOptions) {
   const std::string out = scratchFolder() + "/maps.png";
   CliRun run = runCli({QStringLiteral("render"),

@@ -400,5 +400,85 @@ TEST(UnrealExport, TexturesManifestAndScriptWireEpicsPomFunction) {
     EXPECT_TRUE(has(properties, wire)) << wire;
 }
 
+// The engine preview modes trace the values the exports write: each engine's preview parameters
+// (core/exporters/EnginePreview.h) recomputed from the exported file by the engine's own unit
+// rules, for a marching and a single-step technique.
+TEST(EnginePreview, UnrealPreviewTracesTheManifestsPomInputs) {
+  for (Technique technique : {Technique::Pom, Technique::ParallaxLimited}) {
+    Preset preset = syntheticPreset();
+    preset.material.setTechnique(technique);
+    preset.material.setParameter(ParamId::HeightBias,
+                                 -0.7 * preset.material.parameter(ParamId::HeightScale));
+    const std::string folder = freshFolder("unreal-preview");
+    Result<EngineExportResult> exported = exportUnreal(preset, folder);
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    QFile file(QString::fromStdString(exported->mainPath));
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QJsonObject pom = QJsonDocument::fromJson(file.readAll())
+                                .object()
+                                .value(QStringLiteral("parallax"))
+                                .toObject();
+    const EngineTraceParams trace = engineTrace(preset.material, Engine::Unreal);
+    EXPECT_EQ(trace.trace, EngineTrace::UnrealPom);
+    EXPECT_DOUBLE_EQ(trace.depth, pom.value(QStringLiteral("HeightRatio")).toDouble());
+    EXPECT_DOUBLE_EQ(trace.minSteps, pom.value(QStringLiteral("MinSteps")).toDouble());
+    EXPECT_DOUBLE_EQ(trace.maxSteps, pom.value(QStringLiteral("MaxSteps")).toDouble());
+    EXPECT_DOUBLE_EQ(trace.referencePlane, pom.value(QStringLiteral("ReferencePlane")).toDouble());
+    EXPECT_NEAR(trace.referencePlane, 0.7, 1e-12);
+  }
+}
+
+TEST(EnginePreview, UnityPreviewsTraceTheMaterialsParallaxProperties) {
+  for (Technique technique : {Technique::Pom, Technique::ParallaxLimited}) {
+    Preset preset = syntheticPreset();
+    preset.material.setTechnique(technique);
+    preset.material.setParameter(ParamId::MaxSamples, 40);
+    const std::string urpFolder = freshFolder("unity-urp-preview");
+    Result<EngineExportResult> urp = exportUnity(preset, urpFolder, UnityPipeline::Urp);
+    ASSERT_TRUE(urp.ok()) << urp.error();
+    const UnityMaterialFile urpMat = readUnityMaterial(urp->mainPath);
+    const EngineTraceParams urpTrace = engineTrace(preset.material, Engine::Unity);
+    EXPECT_EQ(urpTrace.trace, EngineTrace::UrpOffset);
+    EXPECT_DOUBLE_EQ(urpTrace.depth, urpMat.floats.at("_Parallax"));
+
+    const std::string hdrpFolder = freshFolder("unity-hdrp-preview");
+    Result<EngineExportResult> hdrp = exportUnity(preset, hdrpFolder, UnityPipeline::Hdrp);
+    ASSERT_TRUE(hdrp.ok()) << hdrp.error();
+    const UnityMaterialFile mat = readUnityMaterial(hdrp->mainPath);
+    const EngineTraceParams trace = engineTrace(preset.material, Engine::UnityHdrp);
+    EXPECT_EQ(trace.trace, EngineTrace::HdrpPom);
+    // HDRP's uvSpaceScale with the tiling scale locked: amplitude (cm to m) over the primitive.
+    ASSERT_EQ(mat.floats.at("_DisplacementLockTilingScale"), 1.0);
+    EXPECT_NEAR(trace.depth,
+                mat.floats.at("_HeightPoMAmplitude") * 0.01 / mat.floats.at("_PPDPrimitiveLength"),
+                1e-12);
+    EXPECT_DOUBLE_EQ(trace.minSteps, mat.floats.at("_PPDMinSamples"));
+    EXPECT_DOUBLE_EQ(trace.maxSteps, mat.floats.at("_PPDMaxSamples"));
+    EXPECT_DOUBLE_EQ(trace.lodThreshold, mat.floats.at("_PPDLodThreshold"));
+  }
+}
+
+// Self-shadowing: no exported engine material has it; the export says so when the material
+// shadows, and the preview draws without it (tests/renderer/EnginePreviewTest.cpp).
+TEST(EnginePreview, ExportsSayTheSelfShadowingIsLost) {
+  Preset preset = syntheticPreset();
+  preset.material.setParameter(ParamId::ShadowMode, double(ShadowMode::Hard));
+  const auto mentionsShadows = [](const std::vector<std::string>& notes) {
+    return std::any_of(notes.begin(), notes.end(), [](const std::string& note) {
+      return note.find("self-shadowing is lost") != std::string::npos;
+    });
+  };
+  Result<EngineExportResult> unreal = exportUnreal(preset, freshFolder("unreal-shadows"));
+  Result<EngineExportResult> urp =
+      exportUnity(preset, freshFolder("urp-shadows"), UnityPipeline::Urp);
+  ASSERT_TRUE(unreal.ok() && urp.ok());
+  EXPECT_TRUE(mentionsShadows(unreal->notes));
+  EXPECT_TRUE(mentionsShadows(urp->notes));
+  preset.material.setParameter(ParamId::ShadowMode, double(ShadowMode::Off));
+  Result<EngineExportResult> quiet = exportUnreal(preset, freshFolder("unreal-no-shadows"));
+  ASSERT_TRUE(quiet.ok());
+  EXPECT_FALSE(mentionsShadows(quiet->notes));
+}
+
 }  // namespace
 }  // namespace relief::core

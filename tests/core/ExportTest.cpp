@@ -5,6 +5,7 @@
 #include "ExportFixtures.h"
 #include "core/compression/TextureFile.h"
 #include "core/exporters/EngineConversion.h"
+#include "core/exporters/EnginePreview.h"
 #include "core/exporters/GltfExport.h"
 #include "core/exporters/GodotExport.h"
 #include "core/exporters/PackageExport.h"
@@ -501,6 +502,28 @@ TEST(GodotExport, NormalMappingOnlyLeavesHeightOff) {
   const GodotResource tres = parseTres(exported->mainPath);
   EXPECT_EQ(tres.properties.count("heightmap_enabled"), 0u);
   EXPECT_EQ(tres.properties.at("normal_enabled"), "true");
+}
+
+// The Godot preview mode traces what the .tres holds: heightmap_scale * 0.01 as the depth, the
+// deep parallax switch as the trace, the layer counts.
+TEST(GodotExport, EnginePreviewTracesTheTresHeightmapSettings) {
+  for (Technique technique : {Technique::Pom, Technique::ParallaxLimited}) {
+    Preset preset = syntheticPreset();
+    preset.material.setTechnique(technique);
+    const std::string folder = freshFolder("godot-preview");
+    Result<EngineExportResult> exported = exportGodot(preset, folder);
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    const auto& p = parseTres(exported->mainPath).properties;
+    const EngineTraceParams trace = engineTrace(preset.material, Engine::Godot);
+    EXPECT_DOUBLE_EQ(trace.depth, std::stod(p.at("heightmap_scale")) * 0.01);
+    const bool deep = p.at("heightmap_deep_parallax") == "true";
+    EXPECT_EQ(deep, technique == Technique::Pom);
+    EXPECT_EQ(trace.trace, deep ? EngineTrace::GodotDeep : EngineTrace::GodotOffset);
+    if (deep) {
+      EXPECT_DOUBLE_EQ(trace.minSteps, std::stod(p.at("heightmap_min_layers")));
+      EXPECT_DOUBLE_EQ(trace.maxSteps, std::stod(p.at("heightmap_max_layers")));
+    }
+  }
 }
 
 }  // namespace

@@ -79,5 +79,33 @@ TEST(ShaderValidation, HexTiledVariantsCompileWithGlslang) {
   }
 }
 
+// Every engine preview's trace (shaders/include/engine_parallax.glsl), as the renderer defines
+// it for a marching and a single-step technique.
+TEST(ShaderValidation, EnginePreviewVariantsCompileWithGlslang) {
+  core::Material material;
+  material.setMap(core::MapSlot::Height, std::make_shared<core::Image>(4, 4, 1));
+  for (core::Technique technique : {core::Technique::Pom, core::Technique::ParallaxLimited}) {
+    material.setTechnique(technique);
+    for (const core::EngineInfo& info : core::allEngines()) {
+      const core::EngineTraceParams trace = core::engineTrace(material, info.engine);
+      std::vector<std::string> defines = materialTableDefines();
+      for (const std::string& define : materialShaderDefines(material, core::DebugView::Shading,
+                                                             FrameOutput::Display, false, &trace))
+        defines.push_back(define);
+      ASSERT_NE(std::find(defines.begin(), defines.end(), "ENGINE_PREVIEW"), defines.end());
+      core::Result<ResolvedShader> resolved =
+          resolveShaderIncludes("material.frag", loadShaderSource, shaderPrelude(defines));
+      ASSERT_TRUE(resolved.ok()) << resolved.error();
+      const std::string name =
+          std::string(info.name) + "_" + std::string(core::techniqueName(technique));
+      const std::string file = test::scratchFolder() + "/expanded_engine_" + name + ".frag";
+      std::ofstream(file) << resolved->source;
+      int exitCode = 0;
+      const std::string log = runValidator(file, exitCode);
+      EXPECT_EQ(exitCode, 0) << name << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace relief::renderer
