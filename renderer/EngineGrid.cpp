@@ -24,16 +24,6 @@ core::Material exactMaterial(const core::Material& material) {
   return exact;
 }
 
-std::string errorCaption(const EngineGridPanel& panel) {
-  char text[128];
-  if (panel.error.pixels == 0)
-    std::snprintf(text, sizeof(text), "no pixel compared");
-  else
-    std::snprintf(text, sizeof(text), "UV error: mean %.2f, p95 %.2f texels", panel.error.mean,
-                  panel.error.p95);
-  return text;
-}
-
 }  // namespace
 
 core::Result<std::vector<EngineGridPanelRender>> renderEngineGridPanels(MaterialRenderer& renderer,
@@ -104,11 +94,21 @@ EngineGrid composeEngineGrid(const std::vector<EngineGridPanelRender>& panels,
                      QString::fromStdString(grid.panels[i].label));
     painter.setPen(QColor(255, 214, 120));
     painter.drawText(band.adjusted(line / 3, line + line / 4, 0, 0), Qt::AlignLeft | Qt::AlignTop,
-                     QString::fromStdString(errorCaption(grid.panels[i])));
+                     QString::fromStdString(engineGridErrorCaption(grid.panels[i])));
   }
   painter.end();
   grid.picture = fromQImage(picture);
   return grid;
+}
+
+std::string engineGridErrorCaption(const EngineGridPanel& panel) {
+  char text[128];
+  if (panel.error.pixels == 0)
+    std::snprintf(text, sizeof(text), "UV error: map minified everywhere, move closer");
+  else
+    std::snprintf(text, sizeof(text), "UV error: mean %.2f, p95 %.2f texels", panel.error.mean,
+                  panel.error.p95);
+  return text;
 }
 
 std::string describeEngineGrid(const EngineGrid& grid) {

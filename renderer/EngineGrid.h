@@ -56,5 +56,7 @@ EngineGrid composeEngineGrid(const std::vector<EngineGridPanelRender>& panels,
 
 // "Godot 4: mean 0.41, p95 1.9 texels", a line per panel (the CLI's text output).
 std::string describeEngineGrid(const EngineGrid& grid);
+// The caption of one panel's error: "UV error: mean 0.41, p95 1.90 texels".
+std::string engineGridErrorCaption(const EngineGridPanel& panel);
 
 }  // namespace relief::renderer

@@ -55,6 +55,7 @@ class ViewportWidget;
 }  // namespace relief::ui::viewport
 
 namespace relief::ui::inline window {
+class EngineGridWindow;
 class MainWindow;
 class MapFileLoader;
 class ViewToolBar;

@@ -15,6 +15,7 @@
 #include "ui/panels/ParameterPanel.h"
 #include "ui/panels/ParameterSlider.h"
 #include "ui/viewport/ViewportWidget.h"
+#include "ui/window/EngineGridWindow.h"
 #include "ui/window/MainWindow.h"
 
 #include <QAction>
@@ -421,6 +422,50 @@ TEST_F(ViewportControls, NothingRedrawsWhenNothingChanged) {
   viewDocument()->setLight(light);  // a change request: one redraw
   QTest::qWait(200);
   EXPECT_GE(frames.count(), 1);
+}
+
+// The Preview box and E switch the viewport to an engine's trace (a view option: no undo step),
+// and the Engine Grid window draws Relief's exact trace and every engine with their errors.
+TEST_F(ViewportControls, EnginePreviewAndTheEngineGrid) {
+  m_window->resize(500, 400);
+  document()->setParameter(ParamId::Tiling, 0.1);  // magnified: the grid's panels compare pixels
+  const core::Image relief = grabbed();
+  const int undoSteps = document()->undoStack()->count();
+  auto* engines = m_window->findChild<QComboBox*>(QStringLiteral("enginePreview"));
+  ASSERT_NE(engines, nullptr);
+  ASSERT_EQ(engines->count(), 5);
+  engines->setCurrentIndex(1);
+  Q_EMIT engines->activated(1);
+  EXPECT_EQ(viewDocument()->enginePreview(), core::Engine::Godot);
+  EXPECT_EQ(viewport()->frameSettings().engine, core::Engine::Godot);
+  EXPECT_TRUE(frameChanged(relief, grabbed()));
+  EXPECT_EQ(document()->undoStack()->count(), undoSteps) << "a view option, not an edit";
+  auto* next = m_window->findChild<QAction*>(QStringLiteral("nextEnginePreview"));
+  ASSERT_NE(next, nullptr);
+  EXPECT_EQ(next->shortcut(), QKeySequence(QStringLiteral("E")));
+  next->trigger();
+  EXPECT_EQ(viewDocument()->enginePreview(), core::Engine::Unreal);
+  EXPECT_EQ(engines->currentIndex(), 2);
+  for (int i = 0; i < 3; ++i)
+    next->trigger();
+  EXPECT_FALSE(viewDocument()->enginePreview().has_value()) << "E wraps round to Relief";
+  EXPECT_EQ(engines->currentText(), QStringLiteral("Relief"));
+
+  auto* gridAction = m_window->findChild<QAction*>(QStringLiteral("engineGridAction"));
+  ASSERT_NE(gridAction, nullptr);
+  gridAction->trigger();
+  auto* grid = m_window->findChild<ui::EngineGridWindow*>(QStringLiteral("engineGrid"));
+  ASSERT_NE(grid, nullptr);
+  grid->waitForGrid();
+  const QStringList lines = grid->summary().split(QLatin1Char('\n'));
+  ASSERT_EQ(lines.size(), 5) << grid->summary().toStdString();
+  EXPECT_TRUE(lines[0].startsWith(QStringLiteral("Relief exact: UV error: mean 0.0")))
+      << lines[0].toStdString();
+  EXPECT_TRUE(lines[1].startsWith(QStringLiteral("Godot 4: UV error: mean")))
+      << lines[1].toStdString();
+  const int panelWidth = viewport()->width() * int(viewport()->devicePixelRatioF());
+  EXPECT_EQ(grid->picture().width(), 5 * std::min(panelWidth, 720) + 4 * 4);
+  grid->close();
 }
 
 TEST_F(ViewportControls, ErrorViewReportsTheErrorAgainstTheExactTrace) {

@@ -151,6 +151,13 @@ void ViewDocument::setTilePreview(int repeats, bool seams, bool hex) {
   Q_EMIT tilePreviewChanged();
 }
 
+void ViewDocument::setEnginePreview(std::optional<core::Engine> engine) {
+  if (engine == m_enginePreview)
+    return;
+  m_enginePreview = engine;
+  Q_EMIT enginePreviewChanged();
+}
+
 void ViewDocument::setLightBelowHorizonAllowed(bool allowed) {
   if (allowed == m_lightBelowHorizon)
     return;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "core/base/Result.h"
+#include "core/exporters/EnginePreview.h"
 #include "core/image/Image.h"
 #include "core/material/MapSlot.h"
 #include "core/material/Material.h"
@@ -21,6 +22,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QUndoStack;
@@ -92,6 +94,10 @@ class ViewDocument : public QObject {
   bool tileSeams() const { return m_tileSeams; }
   bool hexTiling() const { return m_hexTiling; }
   void setTilePreview(int repeats, bool seams, bool hex);
+  // The engine preview, navigation too: the relief traced as that engine's exported material
+  // traces it (core/exporters/EnginePreview.h); none: Relief's own technique.
+  std::optional<core::Engine> enginePreview() const { return m_enginePreview; }
+  void setEnginePreview(std::optional<core::Engine> engine);
   void setLightBelowHorizonAllowed(bool allowed);
   const std::vector<CompressedPreview>& compressedPreviews() const { return m_previews; }
   CompressedView compressedView() const { return m_compressedView; }
@@ -123,6 +129,7 @@ class ViewDocument : public QObject {
   void meshChanged();  // the mesh and its source; the camera is framed on it
   void debugViewChanged();
   void tilePreviewChanged();
+  void enginePreviewChanged();
   void lightBelowHorizonAllowedChanged(bool allowed);
   void compressedPreviewChanged();  // the previews or the choice of what is shown
 
@@ -139,6 +146,7 @@ class ViewDocument : public QObject {
   int m_tileRepeats = 1;
   bool m_tileSeams = false;
   bool m_hexTiling = false;
+  std::optional<core::Engine> m_enginePreview;
   MeshChoice m_mesh;
   std::vector<CompressedPreview> m_previews;
   CompressedView m_compressedView = CompressedView::Original;

@@ -79,7 +79,7 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, ViewDocument* view, Q
   for (auto signal : {&ViewDocument::cameraChanged, &ViewDocument::lightChanged,
                       &ViewDocument::environmentChanged, &ViewDocument::displayChanged,
                       &ViewDocument::debugViewChanged, &ViewDocument::compressedPreviewChanged,
-                      &ViewDocument::tilePreviewChanged})
+                      &ViewDocument::tilePreviewChanged, &ViewDocument::enginePreviewChanged})
     connect(view, signal, this, &ViewportWidget::showViewDocument);
   connect(view, &ViewDocument::meshChanged, this, [this] {
     m_meshDirty = true;
@@ -126,6 +126,7 @@ void ViewportWidget::showViewDocument() {
   m_frame.view.display = m_view->display();
   m_frame.debugView = m_view->debugView();
   m_frame.tiles = {m_view->tileRepeats(), m_view->tileSeams(), m_view->hexTiling()};
+  m_frame.engine = m_view->enginePreview();
   if (!m_framing)
     changed();
 }
@@ -402,6 +403,10 @@ void ViewportWidget::paintOverlays() {
       overlay.leftLabel = tr("A (live): %1").arg(label(material));
       overlay.rightLabel = tr("B (held): %1").arg(label(m_frame.split->material));
     }
+  }
+  if (m_frame.engine) {
+    overlay.engineLabel = tr("%1 preview: the relief as the exported material traces it")
+                              .arg(toQString(core::engineInfo(*m_frame.engine).label));
   }
   if (overlay.isEmpty())
     return;  // nothing drawn over the frame

@@ -203,6 +203,8 @@ void MainWindow::createMenus() {
   }
   view->addAction(m_toolBar->compareAction());
   view->addAction(m_toolBar->holdAction());
+  view->addAction(m_toolBar->engineCycleAction());
+  view->addAction(m_toolBar->engineGridAction());
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     view->addAction(dock->toggleViewAction());

@@ -6,6 +6,7 @@
 #include "ui/QtText.h"
 #include "ui/document/ViewDocument.h"
 #include "ui/viewport/ViewportWidget.h"
+#include "ui/window/EngineGridWindow.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -20,7 +21,8 @@ ViewToolBar::ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* 
       m_view(view),
       m_viewport(viewport),
       m_debugView(new QComboBox),
-      m_meshBox(new QComboBox) {
+      m_meshBox(new QComboBox),
+      m_engineBox(new QComboBox) {
   setObjectName(QStringLiteral("viewToolBar"));
   setMovable(false);
 
@@ -91,6 +93,50 @@ ViewToolBar::ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* 
     m_tile->setChecked(m_view->tileRepeats() > 1);
     m_seams->setChecked(m_view->tileSeams());
     m_hex->setChecked(m_view->hexTiling());
+  });
+  addSeparator();
+
+  // The engine preview: the relief as an engine's exported material traces it.
+  m_engineBox->setObjectName(QStringLiteral("enginePreview"));
+  m_engineBox->addItem(tr("Relief"));
+  for (const core::EngineInfo& info : core::allEngines())
+    m_engineBox->addItem(toQString(info.label), toQString(info.name));
+  m_engineBox->setToolTip(
+      tr("Preview the relief as an engine draws the exported material: its own tracer (step "
+         "rule, refinement, depth units, LOD), fed the values the export writes, without "
+         "self-shadowing (no engine material has it). Relief: this editor's technique. (E "
+         "cycles)"));
+  connect(m_engineBox, &QComboBox::activated, this, [this](int index) {
+    m_view->setEnginePreview(index == 0 ? std::nullopt
+                                        : std::optional(core::allEngines()[index - 1].engine));
+  });
+  connect(view, &ViewDocument::enginePreviewChanged, this, [this] {
+    const std::optional<core::Engine> engine = m_view->enginePreview();
+    m_engineBox->setCurrentIndex(engine ? int(*engine) + 1 : 0);
+  });
+  addWidget(new QLabel(tr(" Preview ")));
+  addWidget(m_engineBox);
+  // In the View menu (MainWindow), not on the bar: the box shows the state.
+  m_engineCycle = new QAction(tr("Next Engine Preview"), this);
+  m_engineCycle->setObjectName(QStringLiteral("nextEnginePreview"));
+  m_engineCycle->setShortcut(QKeySequence(tr("E")));
+  connect(m_engineCycle, &QAction::triggered, this, [this] {
+    const int next = (m_engineBox->currentIndex() + 1) % m_engineBox->count();
+    m_view->setEnginePreview(next == 0 ? std::nullopt
+                                       : std::optional(core::allEngines()[next - 1].engine));
+  });
+  m_engineGrid = addAction(tr("Engine Grid…"));
+  m_engineGrid->setObjectName(QStringLiteral("engineGridAction"));
+  m_engineGrid->setShortcut(QKeySequence(tr("Shift+E")));
+  m_engineGrid->setToolTip(
+      tr("Relief's exact trace and every engine side by side at this view, each with its UV "
+         "error against the exact trace. (Shift+E)"));
+  connect(m_engineGrid, &QAction::triggered, this, [this] {
+    if (!m_engineGridWindow)
+      m_engineGridWindow = new EngineGridWindow(m_view, m_viewport, parentWidget());
+    m_engineGridWindow->show();
+    m_engineGridWindow->raise();
+    m_engineGridWindow->refresh();
   });
   addSeparator();
 

@@ -1,5 +1,6 @@
 // ViewToolBar: the main window's "View" toolbar — what the viewport shows (the shaded material
-// or a diagnostic view), the mesh it is shown on, the tile preview and the A|B comparison. The
+// or a diagnostic view), the mesh it is shown on, the tile preview, the engine preview (and the
+// engine grid window) and the A|B comparison. The
 // debug view and the mesh are the view document's, and the boxes follow it whoever changed them (a
 // preset, undo); the comparison is the viewport's own.
 #pragma once
@@ -27,6 +28,11 @@ class ViewToolBar : public QToolBar {
   QAction* tileAction() const { return m_tile; }
   QAction* seamsAction() const { return m_seams; }
   QAction* hexAction() const { return m_hex; }
+  QComboBox* engineBox() const { return m_engineBox; }
+  QAction* engineGridAction() const { return m_engineGrid; }
+  QAction* engineCycleAction() const { return m_engineCycle; }  // E: Relief, then each engine
+  // The engine grid window, once opened (null before).
+  EngineGridWindow* engineGridWindow() const { return m_engineGridWindow; }
 
  Q_SIGNALS:
   // A primitive was picked in the mesh box (by name); the window loads it and reports problems.
@@ -44,6 +50,10 @@ class ViewToolBar : public QToolBar {
   QAction* m_tile;
   QAction* m_seams;
   QAction* m_hex;
+  QComboBox* m_engineBox;
+  QAction* m_engineGrid;
+  QAction* m_engineCycle;
+  EngineGridWindow* m_engineGridWindow = nullptr;
 };
 
 }  // namespace relief::ui::inline window
