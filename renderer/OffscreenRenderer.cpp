@@ -117,6 +117,14 @@ core::Result<ErrorViewInputs> OffscreenRenderer::renderErrorViewInputs(const Fra
   return relief::renderer::renderErrorViewInputs(*m_renderer, frame, width, height);
 }
 
+core::Result<CostTable> OffscreenRenderer::measureCostTableFrames(const FrameSettings& frame,
+                                                                  int width, int height,
+                                                                  const FrameTiming& timing) {
+  if (!makeCurrent())
+    return core::makeError("cannot make the offscreen OpenGL context current");
+  return relief::renderer::measureCostTableFrames(*m_renderer, frame, width, height, timing);
+}
+
 core::Result<std::vector<EngineGridPanelRender>> OffscreenRenderer::renderEngineGridPanels(
     const FrameSettings& frame, int panelWidth, int panelHeight) {
   if (!makeCurrent())

@@ -7,6 +7,7 @@
 #include "core/image/Image.h"
 #include "core/material/Material.h"
 #include "core/mesh/Mesh.h"
+#include "renderer/CostTable.h"
 #include "renderer/EngineGrid.h"
 #include "renderer/ErrorView.h"
 #include "renderer/FrameSettings.h"
@@ -60,6 +61,9 @@ class OffscreenRenderer {
   // Prefilters the environment `source` names (a built-in or a file, through
   // core::environmentRadiance) and reads the result back. Each call prefilters again.
   core::Result<PrefilteredEnvironment> prefilterEnvironment(const std::string& source);
+  // The cost table's frames (see CostTable.h).
+  core::Result<CostTable> measureCostTableFrames(const FrameSettings& frame, int width, int height,
+                                                 const FrameTiming& timing);
   // The engine grid's GL passes (see EngineGrid.h).
   core::Result<std::vector<EngineGridPanelRender>> renderEngineGridPanels(
       const FrameSettings& frame, int panelWidth, int panelHeight);

@@ -55,6 +55,7 @@ class ViewportWidget;
 }  // namespace relief::ui::viewport
 
 namespace relief::ui::inline window {
+class CostTableWindow;
 class EngineGridWindow;
 class MainWindow;
 class MapFileLoader;

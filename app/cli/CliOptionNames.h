@@ -11,6 +11,7 @@ namespace relief::cli::option {
 inline const QString kAlso = QStringLiteral("also");
 inline const QString kBackground = QStringLiteral("background");
 inline const QString kCheck = QStringLiteral("check");
+inline const QString kCostTable = QStringLiteral("cost-table");
 inline const QString kDistance = QStringLiteral("distance");
 inline const QString kEngine = QStringLiteral("engine");
 inline const QString kEnvironment = QStringLiteral("environment");
@@ -31,6 +32,7 @@ inline const QString kLightIntensity = QStringLiteral("light-intensity");
 inline const QString kLightPitch = QStringLiteral("light-pitch");
 inline const QString kLightYaw = QStringLiteral("light-yaw");
 inline const QString kMaps = QStringLiteral("maps");
+inline const QString kMaxError = QStringLiteral("max-error");
 inline const QString kMesh = QStringLiteral("mesh");
 inline const QString kMethod = QStringLiteral("method");
 inline const QString kMetrics = QStringLiteral("metrics");

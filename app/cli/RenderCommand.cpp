@@ -5,6 +5,7 @@
 
 #include "../DisplayCheck.h"
 #include "CliCommon.h"
+#include "RenderAnalysis.h"
 #include "RenderLighting.h"
 
 #include "core/compression/MapFile.h"
@@ -131,6 +132,19 @@ CliOptions renderOptions() {
                      QStringLiteral("Hex-tiling against visible repetition (the GUI's Hex): "
                                     "not with cone, quadtree or displacement."),
                      {}});
+  options.push_back(
+      {option::kCostTable,
+       {},
+       QStringLiteral("Instead of an image: each technique (normal, parallax, POM at 8-32, "
+                      "16-64 and 32-128 samples, relief, cone, quadtree, displacement) with its "
+                      "frame time (fastest and median of timed frames) and its UV error against "
+                      "the exact trace at this view and size, the cheapest within --max-error "
+                      "marked. With --json, as one object."),
+       {}});
+  options.push_back({option::kMaxError, QStringLiteral("texels"),
+                     QStringLiteral("The cost table's error bound: the mean UV error the "
+                                    "cheapest technique must stay within."),
+                     QStringLiteral("0.25")});
   options.push_back({option::kEngine,
                      QStringLiteral("name|grid"),
                      QStringLiteral("Trace the relief as that engine's exported material does: ") +
@@ -168,6 +182,8 @@ CliOptions renderOptions() {
 
 struct RenderRequest {
   bool engineGrid = false;  // --engine grid
+  bool costTable = false;   // --cost-table
+  double maxError = 0.25;   // --max-error
   core::Material material;
   core::Mesh mesh;
   renderer::FrameSettings frame;
@@ -283,8 +299,6 @@ std::optional<int> parseOutput(const QCommandLineParser& parser, RenderRequest& 
     return kExitUsage;
   }
   request.exr = format == QStringLiteral("exr");
-  request.json = parser.isSet(option::kJson);
-  request.stats = parser.isSet(option::kStats);
   const core::ImageFileType* type = core::imageFileTypeForPath(request.outPath.toStdString());
   if (request.exr && outSuffix != QStringLiteral("exr")) {
     printError(QStringLiteral("--out %1: --format exr writes an .exr file").arg(request.outPath));
@@ -489,12 +503,29 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     printError(QStringLiteral("render takes at most one preset (see --help)"));
     return kExitUsage;
   }
-  if (!parser.isSet(option::kOut)) {
+  request.json = parser.isSet(option::kJson);
+  request.stats = parser.isSet(option::kStats);
+  request.costTable = parser.isSet(option::kCostTable);
+  const std::optional<double> maxError =
+      numberOption(parser, option::kMaxError, core::kErrorDisplayTexels);
+  if (!maxError || *maxError < 0.0) {
+    if (maxError)
+      printError(QStringLiteral("--max-error: expected texels, 0 or more"));
+    return kExitUsage;
+  }
+  request.maxError = *maxError;
+  if (parser.isSet(option::kOut) && request.costTable) {
+    printError(QStringLiteral("--cost-table prints a table and writes no image: drop --out"));
+    return kExitUsage;
+  }
+  if (!parser.isSet(option::kOut) && !request.costTable) {
     printError(QStringLiteral("render needs --out FILE (see --help)"));
     return kExitUsage;
   }
-  if (auto exit = parseOutput(parser, request))
-    return exit;
+  if (parser.isSet(option::kOut)) {
+    if (auto exit = parseOutput(parser, request))
+      return exit;
+  }
   bool anyMap = parser.isSet(option::kOrm);
   for (core::MapSlot slot : core::kAllMapSlots)
     anyMap = anyMap || parser.isSet(mapOptionName(slot));
@@ -507,32 +538,6 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   if (auto exit = applyOverrides(parser, request))
     return exit;
   return resolveView(parser, request);
-}
-
-// The engine grid (renderer/EngineGrid.h): prints each panel's UV error against the exact
-// trace and returns the captioned picture, a panel of --size each.
-core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscreen,
-                                           const RenderRequest& request, QJsonObject& report) {
-  auto panels = offscreen.renderEngineGridPanels(request.frame, request.width, request.height);
-  if (!panels)
-    return core::makeError(panels.error());
-  renderer::EngineGrid grid = renderer::composeEngineGrid(panels.value());
-  QJsonArray rows;
-  for (const renderer::EngineGridPanel& panel : grid.panels) {
-    rows.append(QJsonObject{
-        {QStringLiteral("engine"),
-         panel.engine ? qstr(core::engineInfo(*panel.engine).name) : QStringLiteral("relief")},
-        {QStringLiteral("label"), QString::fromStdString(panel.label)},
-        {QStringLiteral("uvErrorTexels"),
-         QJsonObject{{QStringLiteral("mean"), panel.error.mean},
-                     {QStringLiteral("p95"), panel.error.p95},
-                     {QStringLiteral("max"), panel.error.maximum},
-                     {QStringLiteral("pixels"), double(panel.error.pixels)}}}});
-  }
-  report.insert(QStringLiteral("panels"), rows);
-  if (!request.json)
-    printOut(QString::fromStdString(renderer::describeEngineGrid(grid)));
-  return std::move(grid.picture);
 }
 
 }  // namespace
@@ -565,8 +570,13 @@ int renderRequest(renderer::OffscreenRenderer& offscreen, const RenderRequest& r
   offscreen.setMesh(request.mesh);
   offscreen.setMaterial(request.material);
   QJsonObject report;
+  if (request.costTable) {
+    return printCostTable(offscreen, request.frame, request.width, request.height, request.maxError,
+                          request.json);
+  }
   core::Result<core::Image> image = request.engineGrid
-                                        ? renderEngineGrid(offscreen, request, report)
+                                        ? renderEngineGrid(offscreen, request.frame, request.width,
+                                                           request.height, request.json, report)
                                     : request.frame.debugView == core::DebugView::Error
                                         ? renderErrorView(offscreen, request, report)
                                         : renderView(offscreen, request);

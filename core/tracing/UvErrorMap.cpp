@@ -13,13 +13,22 @@
 
 namespace relief::core::inline tracing {
 
-UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const HeightField& field,
-                             const std::function<void(int, int)>& progress,
-                             const std::atomic<bool>* cancel) {
-  UvErrorMap result;
-  const int width = finalUv.width();
-  const int height = finalUv.height();
-  result.texels = Image(width, height, 1);
+namespace {
+
+// ExactUvs' status channel.
+constexpr float kStatusNotCovered = 0.0f;
+constexpr float kStatusHit = 1.0f;
+constexpr float kStatusMinified = 2.0f;
+constexpr float kStatusMissed = 3.0f;
+
+}  // namespace
+
+Image traceExactUvs(const Image& coverage, const Image& eyeRays, const HeightField& field,
+                    const std::function<void(int, int)>& progress,
+                    const std::atomic<bool>* cancel) {
+  const int width = coverage.width();
+  const int height = coverage.height();
+  Image exact(width, height, 4);
   std::atomic<int> done{0};
   WorkControl control;
   if (cancel)
@@ -28,33 +37,57 @@ UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const H
       height,
       [&](int y) {
         for (int x = 0; x < width; ++x) {
-          float& out = result.texels.at(x, y, 0);
-          out = kErrorNotCovered;
-          if (cancel && cancel->load())
-            continue;
-          const float* uv = finalUv.pixel(x, y);
+          float* out = exact.pixel(x, y);
+          out[2] = kStatusNotCovered;
+          const float* uv = coverage.pixel(x, y);
           const float* ray = eyeRays.pixel(x, y);
-          if (uv[3] <= 0.0f)
+          if ((cancel && cancel->load()) || uv[3] <= 0.0f)
             continue;
           if (uv[2] >= kErrorMaxMipLevel) {
-            out = kErrorMinified;
+            out[2] = kStatusMinified;
             continue;
           }
           const double vx = ray[2], vy = ray[3];
           const double vz = std::sqrt(std::max(0.0, 1.0 - vx * vx - vy * vy));
           const ViewRayHit hit = traceViewRay(field, {ray[0], ray[1]}, {vx, vy, vz});
-          if (!hit.hit)
-            continue;
-          const double du = (double(uv[0]) - hit.uv.x) * field.width();
-          const double dv = (double(uv[1]) - hit.uv.y) * field.height();
-          out = float(std::hypot(du, dv));
+          // Kept as the offset from the entry UV: small, so a float holds it exactly enough
+          // (tiled UVs run to tens, where a float UV keeps a thousandth of a texel).
+          out[0] = float(hit.uv.x - double(ray[0]));
+          out[1] = float(hit.uv.y - double(ray[1]));
+          out[2] = hit.hit ? kStatusHit : kStatusMissed;
         }
         const int finished = ++done;
         if (progress)
           progress(finished, height);
       },
       control);
+  return exact;
+}
 
+UvErrorMap uvErrorAgainst(const Image& finalUv, const Image& eyeRays, const Image& exactUvs,
+                          int fieldWidth, int fieldHeight) {
+  UvErrorMap result;
+  const int width = finalUv.width();
+  const int height = finalUv.height();
+  result.texels = Image(width, height, 1);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      float& out = result.texels.at(x, y, 0);
+      out = kErrorNotCovered;
+      const float* uv = finalUv.pixel(x, y);
+      const float* exact = exactUvs.pixel(x, y);
+      const float* ray = eyeRays.pixel(x, y);
+      if (uv[3] <= 0.0f || exact[2] == kStatusNotCovered || exact[2] == kStatusMissed)
+        continue;
+      if (exact[2] == kStatusMinified || uv[2] >= kErrorMaxMipLevel) {
+        out = kErrorMinified;
+        continue;
+      }
+      const double du = (double(uv[0]) - (double(ray[0]) + double(exact[0]))) * fieldWidth;
+      const double dv = (double(uv[1]) - (double(ray[1]) + double(exact[1]))) * fieldHeight;
+      out = float(std::hypot(du, dv));
+    }
+  }
   std::vector<float> covered;
   covered.reserve(result.texels.pixelCount());
   for (std::size_t i = 0; i < result.texels.valueCount(); ++i) {
@@ -73,6 +106,13 @@ UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const H
     result.p95 = covered[rank];
   }
   return result;
+}
+
+UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const HeightField& field,
+                             const std::function<void(int, int)>& progress,
+                             const std::atomic<bool>* cancel) {
+  return uvErrorAgainst(finalUv, eyeRays, traceExactUvs(finalUv, eyeRays, field, progress, cancel),
+                        field.width(), field.height());
 }
 
 std::string describeUvError(const UvErrorMap& map) {

@@ -42,6 +42,17 @@ UvErrorMap computeUvErrorMap(const Image& finalUv, const Image& eyeRays, const H
                              const std::function<void(int done, int total)>& progress = {},
                              const std::atomic<bool>* cancel = nullptr);
 
+// The same in two parts, for many frames of one view (the cost table: one exact trace, a frame
+// per technique). traceExactUvs traces the eye rays where `coverage` (a frame's float uv view)
+// is covered and not minified: rg the exact UV less the entry UV, b a status (not covered,
+// hit, minified, missed). uvErrorAgainst compares a frame's UVs with it, the same eye rays
+// giving the entry UVs back.
+Image traceExactUvs(const Image& coverage, const Image& eyeRays, const HeightField& field,
+                    const std::function<void(int done, int total)>& progress = {},
+                    const std::atomic<bool>* cancel = nullptr);
+UvErrorMap uvErrorAgainst(const Image& finalUv, const Image& eyeRays, const Image& exactUvs,
+                          int fieldWidth, int fieldHeight);
+
 // "mean M, 95th percentile P, max X texels over N pixels", and how many minified pixels were left
 // out: the summary the CLI prints and the viewport shows.
 std::string describeUvError(const UvErrorMap& map);

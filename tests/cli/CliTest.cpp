@@ -297,6 +297,55 @@ TEST(Cli, RenderEngineGridReportsEachEnginesUvError) {
       << bad.err;
 }
 
+// --cost-table: every technique's frame time and UV error at the view, the cheapest within
+// --max-error marked (the fastest of the rows within it); it writes no image, and a bad bound
+// or an --out beside it is a usage error.
+TEST(Cli, RenderCostTableMarksTheCheapestWithinTheBound) {
+  CliRun run =
+      runCli({QStringLiteral("render"), q(samplePreset("bricks")), QStringLiteral("--cost-table"),
+              QStringLiteral("--json"), QStringLiteral("--size"), QStringLiteral("200x150"),
+              QStringLiteral("--pitch"), QStringLiteral("20"), QStringLiteral("--distance"),
+              QStringLiteral("0.3"), QStringLiteral("--max-error"), QStringLiteral("0.3")});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const QJsonObject table = QJsonDocument::fromJson(QByteArray::fromStdString(run.out)).object();
+  const QJsonArray rows = table.value(QStringLiteral("rows")).toArray();
+  ASSERT_EQ(rows.size(), 9);
+  EXPECT_EQ(table.value(QStringLiteral("maxError")).toDouble(), 0.3);
+  QString expected;
+  double fastestWithin = 1e9;
+  int marked = 0;
+  for (const QJsonValue& value : rows) {
+    const QJsonObject row = value.toObject();
+    const QJsonObject error = row.value(QStringLiteral("uvErrorTexels")).toObject();
+    EXPECT_GT(row.value(QStringLiteral("frame_ms_min")).toDouble(), 0.0);
+    EXPECT_LE(row.value(QStringLiteral("frame_ms_min")).toDouble(),
+              row.value(QStringLiteral("frame_ms")).toDouble());
+    EXPECT_GT(error.value(QStringLiteral("pixels")).toDouble(), 1000.0);
+    if (error.value(QStringLiteral("mean")).toDouble() <= 0.3 &&
+        row.value(QStringLiteral("frame_ms_min")).toDouble() < fastestWithin) {
+      fastestWithin = row.value(QStringLiteral("frame_ms_min")).toDouble();
+      expected = row.value(QStringLiteral("label")).toString();
+    }
+    marked += row.value(QStringLiteral("cheapest")).toBool() ? 1 : 0;
+  }
+  EXPECT_EQ(marked, 1);
+  EXPECT_EQ(table.value(QStringLiteral("cheapest")).toString(), expected);
+  EXPECT_EQ(rows[0].toObject().value(QStringLiteral("label")).toString(), QStringLiteral("normal"));
+  EXPECT_EQ(rows[2].toObject().value(QStringLiteral("label")).toString(),
+            QStringLiteral("pom 8-32"));
+
+  for (const QStringList& bad :
+       {QStringList{QStringLiteral("--cost-table"), QStringLiteral("--out"),
+                    q(scratchFolder() + "/cost.png")},
+        QStringList{QStringLiteral("--cost-table"), QStringLiteral("--max-error"),
+                    QStringLiteral("-1")},
+        QStringList{QStringLiteral("--cost-table"), QStringLiteral("--max-error"),
+                    QStringLiteral("lots")}}) {
+    CliRun refused = runCli(QStringList{QStringLiteral("render"), q(samplePreset("bricks"))} + bad);
+    EXPECT_EQ(refused.exitCode, 2) << bad.join(' ').toStdString() << ": " << refused.err;
+  }
+}
+
 TEST(Cli, RenderTakesMapsAndParametersAndViewOptions) {
   const std::string out = scratchFolder() + "/maps.png";
   CliRun run = runCli({QStringLiteral("render"),

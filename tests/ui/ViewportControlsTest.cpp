@@ -15,6 +15,7 @@
 #include "ui/panels/ParameterPanel.h"
 #include "ui/panels/ParameterSlider.h"
 #include "ui/viewport/ViewportWidget.h"
+#include "ui/window/CostTableWindow.h"
 #include "ui/window/EngineGridWindow.h"
 #include "ui/window/MainWindow.h"
 
@@ -28,6 +29,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -466,6 +468,37 @@ TEST_F(ViewportControls, EnginePreviewAndTheEngineGrid) {
   const int panelWidth = viewport()->width() * int(viewport()->devicePixelRatioF());
   EXPECT_EQ(grid->picture().width(), 5 * std::min(panelWidth, 720) + 4 * 4);
   grid->close();
+}
+
+// View > Cost Table: every technique timed and measured at the view, the cheapest within the
+// bound marked, and Apply puts its technique and samples on the material in one undo step.
+TEST_F(ViewportControls, CostTableAppliesTheCheapestWithinTheBound) {
+  m_window->resize(500, 400);
+  document()->setParameter(ParamId::Tiling, 0.1);  // magnified: errors are measured
+  grabbed();
+  auto* action = m_window->findChild<QAction*>(QStringLiteral("costTableAction"));
+  ASSERT_NE(action, nullptr);
+  EXPECT_EQ(action->shortcut(), QKeySequence(QStringLiteral("Shift+K")));
+  action->trigger();
+  auto* window = m_window->findChild<ui::CostTableWindow*>(QStringLiteral("costTable"));
+  ASSERT_NE(window, nullptr);
+  window->waitForTable();
+  const renderer::CostTable& table = window->table();
+  ASSERT_EQ(table.rows.size(), 9u);
+  EXPECT_EQ(window->tableWidget()->rowCount(), 9);
+  window->errorBound()->setValue(0.5);
+  const std::optional<std::size_t> cheapest = renderer::cheapestWithin(table, 0.5);
+  ASSERT_TRUE(cheapest.has_value());
+  EXPECT_TRUE(window->tableWidget()->item(int(*cheapest), 0)->font().bold());
+  const core::Material& row = table.rows[*cheapest].material;
+  const int steps = document()->undoStack()->count();
+  window->applyChoice();
+  EXPECT_EQ(document()->material().technique(), row.technique());
+  EXPECT_EQ(document()->material().parameter(ParamId::MaxSamples),
+            row.parameter(ParamId::MaxSamples));
+  EXPECT_EQ(document()->material().parameter(ParamId::Tiling), 0.1) << "other settings kept";
+  EXPECT_EQ(document()->undoStack()->count(), steps + 1);
+  window->close();
 }
 
 TEST_F(ViewportControls, ErrorViewReportsTheErrorAgainstTheExactTrace) {

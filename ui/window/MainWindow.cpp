@@ -19,6 +19,7 @@
 #include "ui/panels/ParameterPanel.h"
 #include "ui/settings/AppSettings.h"
 #include "ui/viewport/ViewportWidget.h"
+#include "ui/window/CostTableWindow.h"
 #include "ui/window/MapFileLoader.h"
 #include "ui/window/ViewToolBar.h"
 #include "ui/window/ViewportImageExport.h"
@@ -205,6 +206,18 @@ void MainWindow::createMenus() {
   view->addAction(m_toolBar->holdAction());
   view->addAction(m_toolBar->engineCycleAction());
   view->addAction(m_toolBar->engineGridAction());
+  QAction* costTable =
+      view->addAction(tr("Cost &Table…"), QKeySequence(tr("Shift+K")), this, [this] {
+        if (!m_costTable)
+          m_costTable = new CostTableWindow(m_document, m_view, m_viewport, this);
+        m_costTable->show();
+        m_costTable->raise();
+        m_costTable->measure();
+      });
+  costTable->setObjectName(QStringLiteral("costTableAction"));
+  costTable->setToolTip(
+      tr("Every technique's frame time and UV error at this view, and the "
+         "cheapest within the error you accept."));
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     view->addAction(dock->toggleViewAction());

@@ -81,6 +81,7 @@ class MainWindow : public QMainWindow {
   MaterialDocument* m_document;
   ViewDocument* m_view;
   ViewportWidget* m_viewport;
+  CostTableWindow* m_costTable = nullptr;
   ParameterPanel* m_parameters = nullptr;
   MapsPanel* m_maps = nullptr;
   LightPanel* m_light = nullptr;

@@ -1,0 +1,87 @@
+// RenderAnalysis; see RenderAnalysis.h.
+#include "RenderAnalysis.h"
+
+#include "CliCommon.h"
+
+#include "core/exporters/EnginePreview.h"
+#include "renderer/CostTable.h"
+#include "renderer/EngineGrid.h"
+#include "renderer/OffscreenRenderer.h"
+
+#include <QJsonArray>
+
+namespace relief::cli {
+
+core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscreen,
+                                           const renderer::FrameSettings& frame, int width,
+                                           int height, bool json, QJsonObject& report) {
+  auto panels = offscreen.renderEngineGridPanels(frame, width, height);
+  if (!panels)
+    return core::makeError(panels.error());
+  renderer::EngineGrid grid = renderer::composeEngineGrid(panels.value());
+  QJsonArray rows;
+  for (const renderer::EngineGridPanel& panel : grid.panels) {
+    rows.append(QJsonObject{
+        {QStringLiteral("engine"),
+         panel.engine ? qstr(core::engineInfo(*panel.engine).name) : QStringLiteral("relief")},
+        {QStringLiteral("label"), QString::fromStdString(panel.label)},
+        {QStringLiteral("uvErrorTexels"),
+         QJsonObject{{QStringLiteral("mean"), panel.error.mean},
+                     {QStringLiteral("p95"), panel.error.p95},
+                     {QStringLiteral("max"), panel.error.maximum},
+                     {QStringLiteral("pixels"), double(panel.error.pixels)}}}});
+  }
+  report.insert(QStringLiteral("panels"), rows);
+  if (!json)
+    printOut(QString::fromStdString(renderer::describeEngineGrid(grid)));
+  return std::move(grid.picture);
+}
+
+int printCostTable(renderer::OffscreenRenderer& offscreen, const renderer::FrameSettings& frame,
+                   int width, int height, double maxMeanTexels, bool json) {
+  // Enough frames for the fastest to settle on a busy machine, few enough for seven or more
+  // techniques in seconds.
+  const renderer::FrameTiming timing{5, 0.3, 40};
+  core::Result<renderer::CostTable> table =
+      offscreen.measureCostTableFrames(frame, width, height, timing);
+  if (!table) {
+    printError(QStringLiteral("render --cost-table: ") + QString::fromStdString(table.error()));
+    return kExitFailure;
+  }
+  renderer::measureCostTableErrors(table.value());
+  if (!json) {
+    printOut(QString::fromStdString(renderer::describeCostTable(table.value(), maxMeanTexels)));
+    return kExitOk;
+  }
+  const std::optional<std::size_t> cheapest =
+      renderer::cheapestWithin(table.value(), maxMeanTexels);
+  QJsonArray rows;
+  for (std::size_t i = 0; i < table->rows.size(); ++i) {
+    const renderer::CostTableRow& row = table->rows[i];
+    rows.append(QJsonObject{
+        {QStringLiteral("label"), QString::fromStdString(row.label)},
+        {QStringLiteral("technique"), qstr(core::techniqueName(row.material.technique()))},
+        {QStringLiteral("minSamples"), row.material.parameter(core::ParamId::MinSamples)},
+        {QStringLiteral("maxSamples"), row.material.parameter(core::ParamId::MaxSamples)},
+        {QStringLiteral("frame_ms_min"), row.times.fastest},
+        {QStringLiteral("frame_ms"), row.times.median},
+        {QStringLiteral("frames"), row.times.frames},
+        {QStringLiteral("uvErrorTexels"),
+         QJsonObject{{QStringLiteral("mean"), row.meanError},
+                     {QStringLiteral("p95"), row.p95Error},
+                     {QStringLiteral("pixels"), double(row.pixels)}}},
+        {QStringLiteral("cheapest"), cheapest == i},
+    });
+  }
+  printJson(QJsonObject{
+      {QStringLiteral("rows"), rows},
+      {QStringLiteral("maxError"), maxMeanTexels},
+      {QStringLiteral("cheapest"),
+       cheapest ? QJsonValue(QString::fromStdString(table->rows[*cheapest].label)) : QJsonValue()},
+      {QStringLiteral("width"), width},
+      {QStringLiteral("height"), height},
+  });
+  return kExitOk;
+}
+
+}  // namespace relief::cli

@@ -1,0 +1,28 @@
+// `relief-cli render`'s analyses of a view rather than a picture of it: the engine grid
+// (--engine grid, renderer/EngineGrid.h) and the cost table (--cost-table,
+// renderer/CostTable.h).
+#pragma once
+
+#include "core/base/Result.h"
+#include "core/image/Image.h"
+#include "renderer/FrameSettings.h"
+
+#include <QJsonObject>
+
+namespace relief::renderer {
+class OffscreenRenderer;
+}
+
+namespace relief::cli {
+
+// Draws the engine grid (a panel of width x height each), prints each panel's UV error
+// (unless `json`, when it goes into `report` as "panels") and returns the captioned picture.
+core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscreen,
+                                           const renderer::FrameSettings& frame, int width,
+                                           int height, bool json, QJsonObject& report);
+
+// Measures and prints the cost table (text, or one JSON object); the exit code.
+int printCostTable(renderer::OffscreenRenderer& offscreen, const renderer::FrameSettings& frame,
+                   int width, int height, double maxMeanTexels, bool json);
+
+}  // namespace relief::cli
