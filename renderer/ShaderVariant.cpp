@@ -111,6 +111,9 @@ std::vector<std::string> materialShaderDefines(const core::Material& material, c
   if (material.parameterFlag(ParamId::HeightInNormalAlpha)) {
     defines.emplace_back("HEIGHT_IN_NORMAL_ALPHA");
   }
+  if (material.parameterFlag(ParamId::CurvedSilhouettes) &&
+      core::isMarchingTechnique(material.technique()) && output != FrameOutput::EyeRays)
+    defines.emplace_back("CURVED_SILHOUETTES");
   if (core::ShadingModel(int(material.parameter(ParamId::Shading))) == core::ShadingModel::Pbr)
     defines.emplace_back("SHADING_PBR");
   if (hexTiling && hexTilingApplies(material, view, output))

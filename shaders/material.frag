@@ -8,6 +8,7 @@
 #include "include/debug_views.glsl"
 #include "include/tangent_space.glsl"
 #include "include/height.glsl"
+#include "include/displaced_position.glsl"
 #include "include/parallax.glsl"
 #ifdef ENGINE_PREVIEW
 #include "include/engine_parallax.glsl"
@@ -17,7 +18,6 @@
 #include "include/lighting.glsl"
 #include "include/pbr.glsl"
 #include "include/display.glsl"
-#include "include/displaced_position.glsl"
 #include "include/heatmap.glsl"
 #include "include/color.glsl"
 
@@ -57,6 +57,12 @@ void main() {
   vec2 dx = dFdx(entryUv);
   vec2 dy = dFdy(entryUv);
   UvToWorld uvFrame = uvToWorld(vIn.worldPosition, entryUv);
+#ifdef CURVED_SILHOUETTES
+  gSecondForm = secondFundamentalForm(frame.normal, entryUv, uvFrame);
+  // Curved meshes are taken as closed: where a ray leaves the front surface, the inside of the
+  // back (drawn too, for open meshes) must not fill the gap. Flat parts keep both sides.
+  if (!facesEye && dot(abs(gSecondForm), vec3(1.0)) > 1e-3) discard;
+#endif
 
 #if DEBUG_VIEW == VIEW_RAY
   fragColor = vec4(entryUv, V.xy);
@@ -86,6 +92,9 @@ void main() {
   }
 #endif
 
+#ifdef CURVED_SILHOUETTES
+  if (gMissedSurface) discard;  // curved_march.glsl: outside the relief's outline
+#endif
 #ifdef UV_EDGE_CLAMP
   vec2 meshUv = visible.uv / uTiling;
   if (any(lessThan(meshUv, vec2(0.0))) || any(greaterThan(meshUv, vec2(1.0)))) discard;

@@ -144,6 +144,12 @@ std::vector<ParameterSpec> mappingParameters() {
         "depthOffset", "Write displaced depth", false,
         "Write the depth of the displaced surface (gl_FragDepth), so it meets other geometry "
         "where the relief really is. Disables early depth testing.")),
+    parameter(ParamId::CurvedSilhouettes, kMapping, {ParamUse::Marching, ""}, flagOption(
+        "curvedSilhouettes", "Silhouettes on curved meshes", false,
+        "The marches follow the mesh's curvature (curved relief mapping, Oliveira and "
+        "Policarpo 2005, with the curvature taken per pixel): a ray that passes under the "
+        "relief's top without meeting it leaves the surface, so the relief shapes the mesh's "
+        "outline instead of ending at it. No change on flat meshes.")),
   };
   // clang-format on
 }

@@ -39,6 +39,7 @@ enum class ParamId {
   Tiling,
   UvEdge,
   DepthOffset,
+  CurvedSilhouettes,
   // Surface
   NormalStrength,
   NormalYDown,

@@ -123,6 +123,10 @@ ParallaxResult marchHeightField(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, 
   return result;
 }
 
+#ifdef CURVED_SILHOUETTES
+#include "curved_march.glsl"
+#endif
+
 #if defined(TECHNIQUE_QUADTREE) || defined(TECHNIQUE_CONE)
 #include "bilinear_cell.glsl"
 #endif
@@ -143,7 +147,11 @@ ParallaxResult findVisiblePoint(vec2 uv, vec3 V, vec2 dx, vec2 dy, float scale, 
 #elif defined(TECHNIQUE_PARALLAX_LIMITED)
   return parallaxOffset(uv, V, dx, dy, scale, bias, true);
 #elif defined(TECHNIQUE_STEEP) || defined(TECHNIQUE_POM) || defined(TECHNIQUE_RELIEF)
+#ifdef CURVED_SILHOUETTES
+  return marchCurvedHeightField(uv, V, dx, dy, scale, bias, mipLevel);
+#else
   return marchHeightField(uv, V, dx, dy, scale, bias, mipLevel);
+#endif
 #else  // TECHNIQUE_NORMAL, TECHNIQUE_DISPLACEMENT (its geometry is displaced: material.tese)
   ParallaxResult result;
   result.uv = uv;

@@ -79,6 +79,30 @@ TEST(ShaderValidation, HexTiledVariantsCompileWithGlslang) {
   }
 }
 
+// The curved-silhouette marches (shaders/include/curved_march.glsl) of steep, POM and relief.
+TEST(ShaderValidation, CurvedSilhouetteVariantsCompileWithGlslang) {
+  core::Material material;
+  material.setParameter(core::ParamId::CurvedSilhouettes, 1.0);
+  for (core::Technique technique :
+       {core::Technique::Steep, core::Technique::Pom, core::Technique::Relief}) {
+    material.setTechnique(technique);
+    std::vector<std::string> defines = materialTableDefines();
+    for (const std::string& define :
+         materialShaderDefines(material, core::DebugView::Shading, FrameOutput::Display))
+      defines.push_back(define);
+    ASSERT_NE(std::find(defines.begin(), defines.end(), "CURVED_SILHOUETTES"), defines.end());
+    core::Result<ResolvedShader> resolved =
+        resolveShaderIncludes("material.frag", loadShaderSource, shaderPrelude(defines));
+    ASSERT_TRUE(resolved.ok()) << resolved.error();
+    const std::string name = std::string(core::techniqueName(technique));
+    const std::string file = test::scratchFolder() + "/expanded_curved_" + name + ".frag";
+    std::ofstream(file) << resolved->source;
+    int exitCode = 0;
+    const std::string log = runValidator(file, exitCode);
+    EXPECT_EQ(exitCode, 0) << name << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+  }
+}
+
 // Every engine preview's trace (shaders/include/engine_parallax.glsl), as the renderer defines
 // it for a marching and a single-step technique.
 TEST(ShaderValidation, EnginePreviewVariantsCompileWithGlslang) {

@@ -113,11 +113,20 @@ TEST_F(ViewportControls, EveryParameterChangesTheFrame) {
     // Write-displaced-depth changes only depth: watch it in the depth view.
     viewDocument()->setDebugView(spec.id == ParamId::DepthOffset ? core::DebugView::Depth
                                                                  : core::DebugView::Shading);
+    // Silhouettes change curved meshes' outlines alone: watch the framed sphere.
+    const bool onSphere = spec.id == ParamId::CurvedSilhouettes;
+    if (onSphere) {
+      ASSERT_TRUE(viewDocument()->showMesh(QStringLiteral("sphere")).ok());
+    }
     const core::Image before = grabbed();
     changeThroughItsControl(spec.id);
     EXPECT_TRUE(frameChanged(before, grabbed()));
     document()->undoStack()->undo();
     EXPECT_EQ(compareImages(before, grabbed()).maxError, 0.0) << "undo restores";
+    if (onSphere) {
+      ASSERT_TRUE(viewDocument()->showMesh(QStringLiteral("plane")).ok());
+      viewDocument()->setCamera(camera);
+    }
   }
 }
 
