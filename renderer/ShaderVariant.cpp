@@ -61,72 +61,49 @@ std::string_view engineTraceDefine(core::EngineTrace trace) {
   return {};
 }
 
-// An engine preview compiles the engine's trace alone: no Relief technique (the normal
-// technique's define reads no height), no self-shadowing (no engine material has it), no
-// hex-tiling or UV clamping (Relief's view and edge options, not the engine's), and the depth
-// written only where the engine writes it.
-std::vector<std::string> engineShaderDefines(const core::Material& material,
-                                             const core::EngineTraceParams& engine,
-                                             core::DebugView view, FrameOutput output) {
-  std::vector<std::string> defines = {
-      std::string(core::techniqueShaderDefine(core::Technique::Normal)), "ENGINE_PREVIEW"};
-  if (const std::string_view trace = engineTraceDefine(engine.trace); !trace.empty())
-    defines.emplace_back(trace);
-  if (material.parameterFlag(core::ParamId::HeightInNormalAlpha))
-    defines.emplace_back("HEIGHT_IN_NORMAL_ALPHA");
-  if (core::ShadingModel(int(material.parameter(core::ParamId::Shading))) ==
-      core::ShadingModel::Pbr)
-    defines.emplace_back("SHADING_PBR");
-  if (output == FrameOutput::EyeRays) {
-    defines.emplace_back("DEBUG_VIEW VIEW_RAY");
-    return defines;
-  }
-  if (engine.depthOffset && material.parameterFlag(core::ParamId::DepthOffset))
-    defines.emplace_back("DEPTH_OFFSET");
-  const core::DebugView shaderView = view == core::DebugView::Error ? core::DebugView::Uv : view;
-  defines.push_back("DEBUG_VIEW " + std::to_string(int(shaderView)));
-  if (output == FrameOutput::FloatData)
-    defines.emplace_back("FLOAT_OUTPUT");
-  return defines;
-}
-
 }  // namespace
 
+// An engine preview (`engine`) compiles the engine's trace alone: no Relief technique (the
+// normal technique's define reads no height), no self-shadowing (no engine material has it),
+// no hex-tiling, UV clamping or curved silhouettes (Relief's options, not the engine's), and
+// the depth written only where the engine writes it.
 std::vector<std::string> materialShaderDefines(const core::Material& material, core::DebugView view,
                                                FrameOutput output, bool hexTiling,
                                                const core::EngineTraceParams* engine) {
   using core::ParamId;
-  if (engine != nullptr)
-    return engineShaderDefines(material, *engine, view, output);
-  std::vector<std::string> defines = {
-      std::string(core::techniqueShaderDefine(material.technique()))};
+  const bool relief = engine == nullptr;
+  std::vector<std::string> defines = {std::string(
+      core::techniqueShaderDefine(relief ? material.technique() : core::Technique::Normal))};
+  if (!relief) {
+    defines.emplace_back("ENGINE_PREVIEW");
+    if (const std::string_view trace = engineTraceDefine(engine->trace); !trace.empty())
+      defines.emplace_back(trace);
+  }
   const auto shadowMode = core::ShadowMode(int(material.parameter(ParamId::ShadowMode)));
-  if (shadowMode == core::ShadowMode::Hard)
+  if (relief && shadowMode == core::ShadowMode::Hard)
     defines.emplace_back("SHADOW_HARD");
-  if (shadowMode == core::ShadowMode::Soft)
+  if (relief && shadowMode == core::ShadowMode::Soft)
     defines.emplace_back("SHADOW_SOFT");
-  if (core::UvEdge(int(material.parameter(ParamId::UvEdge))) == core::UvEdge::Clamp) {
+  if (relief && core::UvEdge(int(material.parameter(ParamId::UvEdge))) == core::UvEdge::Clamp)
     defines.emplace_back("UV_EDGE_CLAMP");
-  }
-  if (material.parameterFlag(ParamId::HeightInNormalAlpha)) {
+  if (material.parameterFlag(ParamId::HeightInNormalAlpha))
     defines.emplace_back("HEIGHT_IN_NORMAL_ALPHA");
-  }
-  if (material.parameterFlag(ParamId::CurvedSilhouettes) &&
+  if (relief && material.parameterFlag(ParamId::CurvedSilhouettes) &&
       core::isMarchingTechnique(material.technique()) && output != FrameOutput::EyeRays)
     defines.emplace_back("CURVED_SILHOUETTES");
   if (core::ShadingModel(int(material.parameter(ParamId::Shading))) == core::ShadingModel::Pbr)
     defines.emplace_back("SHADING_PBR");
-  if (hexTiling && hexTilingApplies(material, view, output))
+  if (relief && hexTiling && hexTilingApplies(material, view, output))
     defines.emplace_back("HEX_TILING");
   if (output == FrameOutput::EyeRays) {
     defines.emplace_back("DEBUG_VIEW VIEW_RAY");  // no depth offset: nothing is shaded
     return defines;
   }
-  // Displaced geometry has its depth already.
-  if (material.parameterFlag(ParamId::DepthOffset) &&
-      material.technique() != core::Technique::Displacement) {
+  // Displaced geometry has its depth already; an engine writes it where its material does.
+  const bool writesDepth =
+      relief ? material.technique() != core::Technique::Displacement : engine->depthOffset;
+  if (material.parameterFlag(ParamId::DepthOffset) && writesDepth)
     defines.emplace_back("DEPTH_OFFSET");
-  }
   // The error view is computed on the CPU from a float UV pass.
   const core::DebugView shaderView = view == core::DebugView::Error ? core::DebugView::Uv : view;
   defines.push_back("DEBUG_VIEW " + std::to_string(int(shaderView)));

@@ -54,6 +54,26 @@ TEST(ShaderValidation, EveryStageCompilesWithGlslang) {
   }
 }
 
+// Expands material.frag with the renderer's defines for `material` (and `hexTiling`, `engine`),
+// checks that `expected` is among them and that glslang compiles the result.
+void expectVariantCompiles(const core::Material& material, const std::string& expected,
+                           const std::string& name, bool hexTiling = false,
+                           const core::EngineTraceParams* engine = nullptr) {
+  std::vector<std::string> defines = materialTableDefines();
+  for (const std::string& define : materialShaderDefines(material, core::DebugView::Shading,
+                                                         FrameOutput::Display, hexTiling, engine))
+    defines.push_back(define);
+  ASSERT_NE(std::find(defines.begin(), defines.end(), expected), defines.end()) << name;
+  core::Result<ResolvedShader> resolved =
+      resolveShaderIncludes("material.frag", loadShaderSource, shaderPrelude(defines));
+  ASSERT_TRUE(resolved.ok()) << resolved.error();
+  const std::string file = test::scratchFolder() + "/expanded_" + name + ".frag";
+  std::ofstream(file) << resolved->source;
+  int exitCode = 0;
+  const std::string log = runValidator(file, exitCode);
+  EXPECT_EQ(exitCode, 0) << name << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+}
+
 // The hex-tiled variant (shaders/include/hex_tiling.glsl) of every technique that takes it, as
 // the renderer defines it, including the integer hash and the slope blend.
 TEST(ShaderValidation, HexTiledVariantsCompileWithGlslang) {
@@ -62,20 +82,8 @@ TEST(ShaderValidation, HexTiledVariantsCompileWithGlslang) {
     if (!core::supportsHexTiling(technique))
       continue;
     material.setTechnique(technique);
-    std::vector<std::string> defines = materialTableDefines();
-    for (const std::string& define :
-         materialShaderDefines(material, core::DebugView::Shading, FrameOutput::Display, true))
-      defines.push_back(define);
-    ASSERT_NE(std::find(defines.begin(), defines.end(), "HEX_TILING"), defines.end());
-    core::Result<ResolvedShader> resolved =
-        resolveShaderIncludes("material.frag", loadShaderSource, shaderPrelude(defines));
-    ASSERT_TRUE(resolved.ok()) << resolved.error();
-    const std::string name = std::string(core::techniqueName(technique));
-    const std::string file = test::scratchFolder() + "/expanded_hex_" + name + ".frag";
-    std::ofstream(file) << resolved->source;
-    int exitCode = 0;
-    const std::string log = runValidator(file, exitCode);
-    EXPECT_EQ(exitCode, 0) << name << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+    expectVariantCompiles(material, "HEX_TILING",
+                          "hex_" + std::string(core::techniqueName(technique)), true);
   }
 }
 
@@ -86,20 +94,8 @@ TEST(ShaderValidation, CurvedSilhouetteVariantsCompileWithGlslang) {
   for (core::Technique technique :
        {core::Technique::Steep, core::Technique::Pom, core::Technique::Relief}) {
     material.setTechnique(technique);
-    std::vector<std::string> defines = materialTableDefines();
-    for (const std::string& define :
-         materialShaderDefines(material, core::DebugView::Shading, FrameOutput::Display))
-      defines.push_back(define);
-    ASSERT_NE(std::find(defines.begin(), defines.end(), "CURVED_SILHOUETTES"), defines.end());
-    core::Result<ResolvedShader> resolved =
-        resolveShaderIncludes("material.frag", loadShaderSource, shaderPrelude(defines));
-    ASSERT_TRUE(resolved.ok()) << resolved.error();
-    const std::string name = std::string(core::techniqueName(technique));
-    const std::string file = test::scratchFolder() + "/expanded_curved_" + name + ".frag";
-    std::ofstream(file) << resolved->source;
-    int exitCode = 0;
-    const std::string log = runValidator(file, exitCode);
-    EXPECT_EQ(exitCode, 0) << name << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+    expectVariantCompiles(material, "CURVED_SILHOUETTES",
+                          "curved_" + std::string(core::techniqueName(technique)));
   }
 }
 
@@ -112,21 +108,10 @@ TEST(ShaderValidation, EnginePreviewVariantsCompileWithGlslang) {
     material.setTechnique(technique);
     for (const core::EngineInfo& info : core::allEngines()) {
       const core::EngineTraceParams trace = core::engineTrace(material, info.engine);
-      std::vector<std::string> defines = materialTableDefines();
-      for (const std::string& define : materialShaderDefines(material, core::DebugView::Shading,
-                                                             FrameOutput::Display, false, &trace))
-        defines.push_back(define);
-      ASSERT_NE(std::find(defines.begin(), defines.end(), "ENGINE_PREVIEW"), defines.end());
-      core::Result<ResolvedShader> resolved =
-          resolveShaderIncludes("material.frag", loadShaderSource, shaderPrelude(defines));
-      ASSERT_TRUE(resolved.ok()) << resolved.error();
-      const std::string name =
-          std::string(info.name) + "_" + std::string(core::techniqueName(technique));
-      const std::string file = test::scratchFolder() + "/expanded_engine_" + name + ".frag";
-      std::ofstream(file) << resolved->source;
-      int exitCode = 0;
-      const std::string log = runValidator(file, exitCode);
-      EXPECT_EQ(exitCode, 0) << name << ":\n" << mapShaderLog(log, resolved->lineOrigins);
+      expectVariantCompiles(
+          material, "ENGINE_PREVIEW",
+          "engine_" + std::string(info.name) + "_" + std::string(core::techniqueName(technique)),
+          false, &trace);
     }
   }
 }
