@@ -63,12 +63,15 @@ ParallaxResult godotParallax(vec2 uv, vec3 V, vec2 dx, vec2 dy) {
 
 #ifdef ENGINE_UNREAL_POM
 // Unreal Engine 5, Epic's ParallaxOcclusionMapping material function
-// (/Engine/Functions/Engine_MaterialFunctions01/Texturing). Its graph: UVDist = Height Ratio *
-// -V.xy / V.z, the march starting (1 - Reference Plane) of it above the UVs, a step count
-// lerp(Max Steps, Min Steps, saturate(|V.N|)) whose floor bounds the loop (+2) while its
-// reciprocal is the step; its Custom node marches down from ray height 1 and, at the first
-// sample above the ray, intersects the lines through the last two samples. Without a hit the
-// ray runs past the bottom (MaxSteps + 2 steps) and stays there.
+// (/Engine/Functions/Engine_MaterialFunctions01/Texturing). Epic ships it as a binary asset;
+// its Custom node's HLSL is public, and the graph around it is read here from the HLSL that
+// materials using it compile to (the preshader's step counts, the Local expressions around the
+// Custom node). A dithered step count some materials add on top is left out. Its graph:
+// UVDist = Height Ratio * -V.xy / V.z, the march starting (1 - Reference Plane) of it above the
+// UVs, a step count lerp(Max Steps, Min Steps, saturate(|V.N|)) whose floor bounds the loop
+// (+2) while its reciprocal is the step; its Custom node marches down from ray height 1 and, at
+// the first sample above the ray, intersects the lines through the last two samples. Without a
+// hit the ray runs past the bottom (MaxSteps + 2 steps) and stays there.
 ParallaxResult unrealParallax(vec2 uv, vec3 V, vec2 dx, vec2 dy) {
   vec2 uvDist = uEngineDepth * (-V.xy / V.z);
   vec2 start = uv - uvDist * (1.0 - uEngineReferencePlane);
