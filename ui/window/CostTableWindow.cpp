@@ -7,6 +7,7 @@
 #include "ui/document/ViewDocument.h"
 #include "ui/tasks/BackgroundTask.h"
 #include "ui/viewport/ViewportWidget.h"
+#include "ui/window/ViewportImageExport.h"
 
 #include <QApplication>
 #include <QDialogButtonBox>
@@ -109,12 +110,10 @@ void CostTableWindow::measure() {
   QApplication::setOverrideCursor(Qt::WaitCursor);
   QApplication::processEvents();  // the status shows before the GUI thread is busy
   core::Result<renderer::CostTable> measured = [&]() -> core::Result<renderer::CostTable> {
-    auto offscreen = renderer::OffscreenRenderer::create();
+    renderer::FrameSettings frame;
+    auto offscreen = offscreenOfViewport(*m_view, *m_viewport, frame);
     if (!offscreen)
       return core::makeError(offscreen.error());
-    offscreen.value()->setMesh(m_view->mesh());
-    auto [material, frame] = m_viewport->shownFrame();
-    offscreen.value()->setMaterial(material);
     return offscreen.value()->measureCostTableFrames(frame, width, height, {5, 0.3, 40});
   }();
   QApplication::restoreOverrideCursor();

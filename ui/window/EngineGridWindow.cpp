@@ -8,6 +8,7 @@
 #include "ui/document/ViewDocument.h"
 #include "ui/tasks/BackgroundTask.h"
 #include "ui/viewport/ViewportWidget.h"
+#include "ui/window/ViewportImageExport.h"
 
 #include <QApplication>
 #include <QDialogButtonBox>
@@ -85,12 +86,10 @@ void EngineGridWindow::refresh() {
   QApplication::setOverrideCursor(Qt::WaitCursor);
   core::Result<std::vector<renderer::EngineGridPanelRender>> panels =
       [&]() -> core::Result<std::vector<renderer::EngineGridPanelRender>> {
-    auto offscreen = renderer::OffscreenRenderer::create();
+    renderer::FrameSettings frame;
+    auto offscreen = offscreenOfViewport(*m_view, *m_viewport, frame);
     if (!offscreen)
       return core::makeError(offscreen.error());
-    offscreen.value()->setMesh(m_view->mesh());
-    const auto [material, frame] = m_viewport->shownFrame();
-    offscreen.value()->setMaterial(material);
     return offscreen.value()->renderEngineGridPanels(frame, panelWidth, panelHeight);
   }();
   QApplication::restoreOverrideCursor();

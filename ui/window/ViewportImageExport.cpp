@@ -23,10 +23,23 @@ ViewportImageExport::ViewportImageExport(ViewDocument* view, ViewportWidget* vie
                                          QWidget* dialogParent)
     : QObject(dialogParent), m_view(view), m_viewport(viewport), m_parent(dialogParent) {}
 
+core::Result<std::unique_ptr<renderer::OffscreenRenderer>> offscreenOfViewport(
+    const ViewDocument& view, const ViewportWidget& viewport, renderer::FrameSettings& frame) {
+  auto offscreen = renderer::OffscreenRenderer::create();
+  if (!offscreen)
+    return core::makeError(offscreen.error());
+  offscreen.value()->setMesh(view.mesh());
+  auto [material, shown] = viewport.shownFrame();
+  offscreen.value()->setMaterial(material);
+  frame = std::move(shown);
+  return offscreen;
+}
+
 bool ViewportImageExport::save(const QString& path, int width, int height) {
   QApplication::setOverrideCursor(Qt::WaitCursor);
   core::Result<core::Image> image = [&]() -> core::Result<core::Image> {
-    auto offscreen = renderer::OffscreenRenderer::create();
+    renderer::FrameSettings frame;
+    auto offscreen = offscreenOfViewport(*m_view, *m_viewport, frame);
     if (!offscreen)
       return core::makeError(offscreen.error());
     if (width > offscreen.value()->maxSize() || height > offscreen.value()->maxSize()) {
@@ -36,9 +49,6 @@ bool ViewportImageExport::save(const QString& path, int width, int height) {
                                  .arg(offscreen.value()->maxSize())
                                  .toStdString());
     }
-    offscreen.value()->setMesh(m_view->mesh());
-    const auto [material, frame] = m_viewport->shownFrame();
-    offscreen.value()->setMaterial(material);
     return offscreen.value()->render(frame, width, height);
   }();
   core::Status saved =

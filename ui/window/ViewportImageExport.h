@@ -4,14 +4,24 @@
 // that names the file.
 #pragma once
 
+#include "core/base/Result.h"
+#include "renderer/OffscreenRenderer.h"
 #include "ui/Forward.h"
 
 #include <QObject>
 #include <QString>
 
+#include <memory>
+
 class QWidget;
 
 namespace relief::ui::inline window {
+
+// An offscreen renderer holding exactly what `viewport` shows: `view`'s mesh and the drawn
+// material (compressed previews included); `frame` receives the viewport's frame. Shared by
+// the viewport image, the engine grid and the cost table, which draw the view offscreen.
+core::Result<std::unique_ptr<renderer::OffscreenRenderer>> offscreenOfViewport(
+    const ViewDocument& view, const ViewportWidget& viewport, renderer::FrameSettings& frame);
 
 class ViewportImageExport : public QObject {
   Q_OBJECT
