@@ -2,11 +2,13 @@
 // debug view, what kind of values to write, and the optional A/B split comparison.
 #pragma once
 
+#include "core/compression/MipChain.h"
 #include "core/exporters/EnginePreview.h"
 #include "core/material/Material.h"
 #include "core/view/DebugView.h"
 #include "renderer/RenderView.h"
 
+#include <array>
 #include <optional>
 
 namespace relief::renderer {
@@ -27,10 +29,14 @@ struct SplitComparison {
 // hex-tiling against visible repetition (shaders/include/hex_tiling.glsl; where the technique
 // supports it, core::supportsHexTiling, with repeating UVs, in the shaded and data views but not
 // the error view, whose exact trace reads the map as it is).
+// `distance` looks at the material as from that many times farther: it repeats `distance` times
+// more, so each texel covers 1/distance as many pixels and the sampler reads the mip levels an
+// engine reads there (the relief's depth shrinks with the texel, as it would far away).
 struct TilePreview {
   int repeats = 1;
   bool seams = false;
   bool hex = false;
+  int distance = 1;
 };
 
 struct FrameSettings {
@@ -40,6 +46,10 @@ struct FrameSettings {
   // An engine preview: the relief traced as that engine's exported material traces it
   // (core/exporters/EnginePreview.h, shaders/include/engine_parallax.glsl); none: Relief's own.
   std::optional<core::Engine> engine;
+  // Per slot, the mip chain an uncompressed map is sampled with: the one its compression choice
+  // ships (core::shippedMipChain), built by core's filters as `compress --mips` builds it, so the
+  // original and a compressed preview (which carries its own levels) differ by compression alone.
+  std::array<core::MipChainSpec, core::kMapSlotCount> mipChains{};
   FrameOutput output = FrameOutput::Display;
   std::optional<SplitComparison> split;
 };

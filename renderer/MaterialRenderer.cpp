@@ -250,7 +250,8 @@ void MaterialRenderer::drawMaterial(ShaderProgram& shader, const core::Material&
   program.bind();
   setUniforms(program, material, frame, width, height);
   for (MapSlot slot : core::kAllMapSlots) {
-    m_textures.texture(material, slot).bind(unsigned(kFirstMapUnit + int(slot)));
+    m_textures.texture(material, slot, frame.mipChains[std::size_t(slot)])
+        .bind(unsigned(kFirstMapUnit + int(slot)));
   }
   const std::optional<core::EngineTraceParams> engine = engineTraceFor(material, frame);
   if (engine) {
@@ -432,7 +433,8 @@ void MaterialRenderer::setUniforms(QOpenGLShaderProgram& program, const core::Ma
   }
 
   program.setUniformValue(
-      "uTiling", float(material.parameter(ParamId::Tiling) * std::max(frame.tiles.repeats, 1)));
+      "uTiling", float(material.parameter(ParamId::Tiling) * std::max(frame.tiles.repeats, 1) *
+                       std::max(frame.tiles.distance, 1)));
   program.setUniformValue("uTileSeams", frame.tiles.seams);
 
   const bool packed = material.parameterFlag(ParamId::HeightInNormalAlpha);

@@ -151,11 +151,33 @@ std::unique_ptr<QOpenGLTexture> newMapTexture(int width, int height, int levels,
 
 }  // namespace
 
-std::unique_ptr<QOpenGLTexture> createMapTexture(const Image& image, MapSlot slot) {
-  auto texture = newMapTexture(image.width(), image.height(),
-                               core::mipLevelCount(image.width(), image.height()), slot);
+std::unique_ptr<QOpenGLTexture> createMapTexture(const Image& image, MapSlot slot,
+                                                 const core::MipChainSpec& chain,
+                                                 const Image* spreadNormals) {
+  const int levels = chain.mipmaps ? core::mipLevelCount(image.width(), image.height()) : 1;
+  auto texture = newMapTexture(image.width(), image.height(), levels, slot);
   uploadLevel(*texture, 0, image, slot);
-  texture->generateMipMaps();
+  if (levels == 1)
+    return texture;
+  if (chain.foldNormalSpread && slot == MapSlot::Roughness) {
+    // The folded chain (one channel, all levels at once: a third of the map); a fold that cannot
+    // be made (no normal map, another size) falls through to the plain chain, as the export
+    // refuses it and would not ship it either.
+    core::Result<std::vector<Image>> folded =
+        core::shippedMipLevels(image, slot, chain, spreadNormals);
+    if (folded) {
+      for (int i = 1; i < levels; ++i)
+        uploadLevel(*texture, i, folded.value()[std::size_t(i - 1)], slot);
+      return texture;
+    }
+  }
+  // Level by level, each from the one above, keeping only the level being uploaded (an 8192^2
+  // float map's chain would hold 85 MiB more at once); the levels core::shippedMipLevels makes.
+  Image level;
+  for (int i = 1; i < levels; ++i) {
+    level = core::downsampleForSlot(i == 1 ? image : level, slot, chain.filter);
+    uploadLevel(*texture, i, level, slot);
+  }
   return texture;
 }
 
@@ -177,7 +199,8 @@ std::unique_ptr<QOpenGLTexture> createDecodedTexture(const core::CompressedTextu
   return texture;
 }
 
-QOpenGLTexture& TextureCache::texture(const core::Material& material, MapSlot slot) {
+QOpenGLTexture& TextureCache::texture(const core::Material& material, MapSlot slot,
+                                      const core::MipChainSpec& chain) {
   const std::shared_ptr<const Image>& image = material.map(slot).image;
   if (!image) {
     std::unique_ptr<QOpenGLTexture>& neutral = m_neutral[std::size_t(slot)];
@@ -186,7 +209,16 @@ QOpenGLTexture& TextureCache::texture(const core::Material& material, MapSlot sl
     return *neutral;
   }
   Entry& entry = m_uploads[Key{image.get(), slot}];
+  // A folded roughness chain depends on the normal map as well.
+  const bool folds = chain.foldNormalSpread && slot == MapSlot::Roughness && chain.mipmaps;
+  const std::shared_ptr<const Image> spreadNormals =
+      folds ? material.map(MapSlot::Normal).image : nullptr;
+  if (entry.texture && !entry.compressed &&
+      (entry.chain != chain || entry.spreadNormals != spreadNormals))
+    entry.texture.reset();
   if (!entry.texture) {
+    entry.chain = chain;
+    entry.spreadNormals = spreadNormals;
     entry.image = image;
     if (const auto& compressed = material.map(slot).compressed) {
       entry.compressed = true;
@@ -197,7 +229,7 @@ QOpenGLTexture& TextureCache::texture(const core::Material& material, MapSlot sl
         entry.texture = createDecodedTexture(*compressed, slot);
     }
     if (!entry.texture)
-      entry.texture = createMapTexture(*image, slot);
+      entry.texture = createMapTexture(*image, slot, chain, spreadNormals.get());
   }
   return *entry.texture;
 }

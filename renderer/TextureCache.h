@@ -3,6 +3,7 @@
 // it, and an empty slot gets a neutral 1x1 texture so the shaders never branch on missing maps.
 #pragma once
 
+#include "core/compression/MipChain.h"
 #include "core/material/Material.h"
 #include "core/tracing/ConeMap.h"
 
@@ -36,8 +37,10 @@ core::ConeMap buildTracedConeMap(const core::Material& material);
 
 class TextureCache {
  public:
-  // Needs a current context. Uploads on first use.
-  QOpenGLTexture& texture(const core::Material& material, core::MapSlot slot);
+  // Needs a current context. Uploads on first use; an uncompressed map with the mip chain `chain`
+  // (rebuilt when the chain asked for changes), a compression preview with its own levels.
+  QOpenGLTexture& texture(const core::Material& material, core::MapSlot slot,
+                          const core::MipChainSpec& chain = {});
   // For a slot holding a compressed preview: whether its blocks went to the GPU as they are
   // (false: the driver lacks the format and the decoded map was uploaded). Empty otherwise.
   std::optional<bool> uploadedNatively(const core::Material& material, core::MapSlot slot);
@@ -68,8 +71,10 @@ class TextureCache {
   struct Entry {
     std::shared_ptr<const core::Image> image;  // keeps the key's address from being reused
     std::unique_ptr<QOpenGLTexture> texture;
-    bool compressed = false;  // a compression preview (native blocks or decoded levels)
-    bool native = false;      // compressed blocks uploaded as they are
+    bool compressed = false;   // a compression preview (native blocks or decoded levels)
+    bool native = false;       // compressed blocks uploaded as they are
+    core::MipChainSpec chain;  // of an uncompressed map's texture
+    std::shared_ptr<const core::Image> spreadNormals;  // a folded roughness chain's normal map
   };
   std::map<Key, Entry> m_uploads;
   struct TraceEntry {
@@ -88,10 +93,16 @@ class TextureCache {
 };
 
 // Creates the texture for one slot's image (rows top first, as files and compressed blocks store
-// them; the shaders flip V, see material_inputs.glsl; full mip chain). Colour maps use sRGB storage
-// so the sampler decodes before filtering; data maps keep their precision (16-bit normals, 32-bit
-// float heights).
-std::unique_ptr<QOpenGLTexture> createMapTexture(const core::Image& image, core::MapSlot slot);
+// them; the shaders flip V, see material_inputs.glsl). Colour maps use sRGB storage so the sampler
+// decodes before filtering; data maps keep their precision (16-bit normals, 32-bit float heights).
+// The mip levels are core's (core/compression/MipChain.h: colour averaged in linear light, normals
+// renormalised, box or Kaiser), the chain a compressed export of the map holds, not the driver's
+// glGenerateMipmap, whose filter the GL leaves to the implementation.
+// A roughness map's chain with `chain.foldNormalSpread` widens its levels by the spread of
+// `spreadNormals` (core/compression/RoughnessFold.h).
+std::unique_ptr<QOpenGLTexture> createMapTexture(const core::Image& image, core::MapSlot slot,
+                                                 const core::MipChainSpec& chain = {},
+                                                 const core::Image* spreadNormals = nullptr);
 // The same for a compressed preview decoded by core: every level of the file decoded and uploaded
 // as the slot's format (so the mip levels are the compressed ones, not regenerated).
 std::unique_ptr<QOpenGLTexture> createDecodedTexture(const core::CompressedTexture& compressed,

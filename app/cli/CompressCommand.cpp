@@ -86,6 +86,12 @@ CliOptions compressOptions() {
        QStringLiteral("The mip chain's filter: box (area average), or kaiser (a Kaiser-windowed "
                       "sinc, sharper and without the box's aliasing; wraps at the edges)."),
        QStringLiteral("box")},
+      {option::kRoughnessFromNormals,
+       QStringLiteral("normal-map"),
+       QStringLiteral("The map is a roughness map: widen its mips by this normal map's spread "
+                      "under each texel (Toksvig), so bumps far away stay rough instead of "
+                      "turning into a mirror. Needs --mips and a normal map of the same size."),
+       {}},
       {option::kOut, QStringLiteral("file"), QStringLiteral("Output .dds or .ktx2 file."), {}},
       {option::kZstd, QStringLiteral("level"),
        QStringLiteral("KTX2 only: supercompress the levels with Zstandard at this level "
@@ -108,6 +114,8 @@ CliOptions compressOptions() {
 }
 
 std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser) {
+  if (parser.isSet(option::kRoughnessFromNormals))
+    return core::MapSlot::Roughness;
   if (parser.isSet(option::kNormal))
     return core::MapSlot::Normal;
   if (parser.isSet(option::kHeight))
@@ -186,6 +194,20 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
                   *zstdLevel,
                   parser.isSet(option::kPerceptual),
                   *mipFilter};
+  if (parser.isSet(option::kRoughnessFromNormals)) {
+    if (!parser.isSet(option::kMips)) {
+      printError(QStringLiteral("--roughness-from-normals widens the mips: it needs --mips"));
+      return kExitUsage;
+    }
+    core::Result<core::Image> normals =
+        core::loadMapFile(parser.value(option::kRoughnessFromNormals).toStdString());
+    if (!normals) {
+      printError(QString::fromStdString(normals.error()));
+      return kExitFailure;
+    }
+    job.spreadNormals = std::make_shared<const core::Image>(std::move(normals).value());
+    job.settings.roughnessFromNormals = true;
+  }
   job.heightScale = *heightScale;
   job.measure = parser.isSet(option::kMetrics);
   if (const std::string problem = core::formatSlotProblem(*format, job.slot); !problem.empty()) {

@@ -123,6 +123,12 @@ CliOptions renderOptions() {
                      QStringLiteral("Tile preview: repeat the material N times more in each "
                                     "direction than its tiling says (the GUI's Tile 3x3)."),
                      QStringLiteral("1")});
+  options.push_back(
+      {option::kFarther, QStringLiteral("n"),
+       QStringLiteral("Look as from N times farther (the GUI's Distance xN): the material repeats "
+                      "N times more, so the mip levels an engine samples there are drawn, from "
+                      "the chains the preset's compression choices write (mipmaps, mip filter)."),
+       QStringLiteral("1")});
   options.push_back({option::kSeams,
                      {},
                      QStringLiteral("Tile preview: draw lines where the maps' edges meet."),
@@ -326,6 +332,11 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
       return kExitFailure;
     request.material = std::move(loaded->preset.material);
     request.presetView = loaded->preset.view;
+    // Each map sampled through the mip chain its compression choice ships (the viewport's rule).
+    for (core::MapSlot slot : core::kAllMapSlots) {
+      request.frame.mipChains[std::size_t(slot)] =
+          core::shippedMipChain(loaded->preset.compression[std::size_t(slot)]);
+    }
     request.presetPath = positional.front();
   }
   if (parser.isSet(option::kOrm)) {
@@ -401,7 +412,11 @@ std::optional<int> applyOverrides(const QCommandLineParser& parser, RenderReques
   const std::optional<int> repeats = integerOption(parser, option::kRepeats, 1, 1, 64);
   if (!repeats)
     return kExitUsage;
-  request.frame.tiles = {*repeats, parser.isSet(option::kSeams), parser.isSet(option::kHex)};
+  const std::optional<int> farther = integerOption(parser, option::kFarther, 1, 1, 64);
+  if (!farther)
+    return kExitUsage;
+  request.frame.tiles = {*repeats, parser.isSet(option::kSeams), parser.isSet(option::kHex),
+                         *farther};
   if (parser.isSet(option::kEngine)) {
     const QString engine = parser.value(option::kEngine);
     request.engineGrid = engine == QStringLiteral("grid");

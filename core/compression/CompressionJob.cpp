@@ -41,7 +41,8 @@ Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
     return makeError(problem);
   QElapsedTimer timer;
   timer.start();
-  Result<CompressedTexture> texture = compressMap(*job.map, job.slot, job.settings, control);
+  Result<CompressedTexture> texture =
+      compressMap(*job.map, job.slot, job.settings, control, job.spreadNormals.get());
   if (!texture)
     return makeError(texture.error());
   const double seconds = double(timer.nsecsElapsed()) * 1e-9;

@@ -27,6 +27,8 @@ struct CompressionJob {
   double heightScale = parameterDefault(ParamId::HeightScale);
   // Decode and measure the result (the report); package export only needs the blocks.
   bool measure = true;
+  // The normal map a roughness map's mips fold in (settings.roughnessFromNormals).
+  std::shared_ptr<const Image> spreadNormals = nullptr;
 };
 
 struct CompressionOutcome {

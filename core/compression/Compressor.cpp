@@ -5,6 +5,7 @@
 #include "core/compression/AstcCodec.h"
 #include "core/compression/BlockCodecs.h"
 #include "core/compression/MipChain.h"
+#include "core/compression/RoughnessFold.h"
 
 #include <algorithm>
 #include <atomic>
@@ -180,9 +181,31 @@ CompressedTexture textureOfUnknownOrigin(TextureFormat format, bool srgb) {
   return texture;
 }
 
+Result<std::vector<Image>> shippedMipLevels(const Image& map, MapSlot slot,
+                                            const MipChainSpec& chain, const Image* spreadNormals) {
+  if (!chain.mipmaps)
+    return std::vector<Image>{};
+  if (chain.foldNormalSpread && slot == MapSlot::Roughness) {
+    if (!spreadNormals)
+      return makeError("folding the normals' spread into roughness needs the normal map");
+    if (spreadNormals->width() != map.width() || spreadNormals->height() != map.height()) {
+      return makeError(
+          "folding the normals' spread into roughness needs the normal map at the "
+          "roughness map's size (" +
+          std::to_string(map.width()) + "x" + std::to_string(map.height()) + "), not " +
+          std::to_string(spreadNormals->width()) + "x" + std::to_string(spreadNormals->height()));
+    }
+    return foldedRoughnessLevels(map, *spreadNormals, chain.filter);
+  }
+  std::vector<Image> smaller;
+  for (int i = 1, count = mipLevelCount(map.width(), map.height()); i < count; ++i)
+    smaller.push_back(downsampleForSlot(i == 1 ? map : smaller.back(), slot, chain.filter));
+  return smaller;
+}
+
 Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
                                       const CompressionSettings& settings,
-                                      const WorkControl& control) {
+                                      const WorkControl& control, const Image* spreadNormals) {
   if (map.isEmpty())
     return makeError("the map is empty");
   if (!formatSuitsSlot(settings.format, slot)) {
@@ -196,11 +219,11 @@ Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
   texture.srgb = slot == MapSlot::Color && textureFormatInfo(settings.format).srgbVkFormat != 0;
 
   // Level 0 is the map itself (not copied: a 4096^2 float map is 200 MB).
-  std::vector<Image> smaller;
-  if (settings.mipmaps) {
-    for (int i = 1, count = mipLevelCount(map.width(), map.height()); i < count; ++i)
-      smaller.push_back(downsampleForSlot(i == 1 ? map : smaller.back(), slot, settings.mipFilter));
-  }
+  Result<std::vector<Image>> levels =
+      shippedMipLevels(map, slot, shippedMipChain(settings), spreadNormals);
+  if (!levels)
+    return makeError(levels.error());
+  const std::vector<Image>& smaller = levels.value();
   std::vector<const Image*> chain = {&map};
   for (const Image& level : smaller)
     chain.push_back(&level);

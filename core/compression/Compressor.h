@@ -38,9 +38,19 @@ std::uint64_t compressedLevelSize(TextureFormat format, int width, int height);
 
 // Fails with "cancelled" when cancelled, or when the format cannot hold the map (a colour map
 // in a one-channel format).
+// `spreadNormals` is the normal map a roughness map's mips fold in (settings.roughnessFromNormals;
+// RoughnessFold.h); it fails without one, or when the two differ in size.
 Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
                                       const CompressionSettings& settings,
-                                      const WorkControl& control = {});
+                                      const WorkControl& control = {},
+                                      const Image* spreadNormals = nullptr);
+
+// Levels 1.. of the chain `map` ships with in `slot` (MipChain.h; for a roughness map with
+// `chain.foldNormalSpread` and `spreadNormals`, RoughnessFold.h), as compressMap and the viewport
+// build them. Empty without mipmaps.
+Result<std::vector<Image>> shippedMipLevels(const Image& map, MapSlot slot,
+                                            const MipChainSpec& chain,
+                                            const Image* spreadNormals = nullptr);
 
 // The texels of a level as a GPU samples them: RGBA, without swizzles or rebuilt Z.
 Result<Image> decodeLevel(const CompressedTexture& texture, int level = 0);

@@ -7,6 +7,7 @@
 #include "core/image/ColorSpace.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace relief::core::inline compression {
@@ -149,6 +150,25 @@ Image kaiserDown(const Image& image, Decode decode, Encode encode) {
   return out;
 }
 
+// srgbToLinear of an 8-bit code's value, from a table: most colour maps are 8-bit, and a pow per
+// tap made the chain of a 4096x4096 colour map cost twice its upload. Other values are decoded
+// exactly.
+float decodeSrgb(float encoded) {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> values{};
+    for (int code = 0; code < 256; ++code)
+      values[std::size_t(code)] = srgbToLinear(float(code) / 255.0f);
+    return values;
+  }();
+  const float scaled = encoded * 255.0f;
+  if (scaled >= 0.0f && scaled <= 255.0f) {
+    const int code = int(scaled + 0.5f);
+    if (std::abs(scaled - float(code)) < 1e-3f)
+      return table[std::size_t(code)];
+  }
+  return srgbToLinear(encoded);
+}
+
 template <class Decode, class Encode>
 Image filterDown(const Image& image, MipFilter filter, Decode decode, Encode encode) {
   return filter == MipFilter::Kaiser ? kaiserDown(image, decode, encode)
@@ -187,7 +207,7 @@ Image downsampleForSlot(const Image& image, MapSlot slot, MipFilter filter) {
         image, filter,
         [=](const float* in, float* out) {
           for (int c = 0; c < channels; ++c)
-            out[c] = c < colourChannels ? srgbToLinear(in[c]) : in[c];
+            out[c] = c < colourChannels ? decodeSrgb(in[c]) : in[c];
         },
         [=](float* texel) {
           for (int c = 0; c < colourChannels; ++c)

@@ -20,6 +20,17 @@ enum class MipFilter { Box, Kaiser };
 std::string_view mipFilterName(MipFilter filter);
 std::optional<MipFilter> findMipFilter(std::string_view name);
 
+// The chain a map is sampled with, as a game ships it: level 0 alone (no mipmaps: the sampler
+// aliases wherever a texel is smaller than a pixel), or every level down to 1x1 by `filter`.
+// For a roughness map, `foldNormalSpread` widens each level by the normal map's spread under it
+// (RoughnessFold.h).
+struct MipChainSpec {
+  bool mipmaps = true;
+  MipFilter filter = MipFilter::Box;
+  bool foldNormalSpread = false;
+  bool operator==(const MipChainSpec&) const = default;
+};
+
 // Level 0 is `image` itself; the last level is 1x1.
 std::vector<Image> buildMipChain(const Image& image, MapSlot slot,
                                  MipFilter filter = MipFilter::Box);

@@ -134,4 +134,10 @@ bool isBcFamily(TextureFormat format) {
   return textureFormatInfo(format).family == FormatFamily::Bc;
 }
 
+MipChainSpec shippedMipChain(const std::optional<CompressionSettings>& settings) {
+  if (!settings)
+    return {};
+  return {settings->mipmaps, settings->mipFilter, settings->roughnessFromNormals};
+}
+
 }  // namespace relief::core::inline compression

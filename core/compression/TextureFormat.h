@@ -107,11 +107,18 @@ struct CompressionSettings {
   // BC1-BC3 colour error weighed by luminance (Rec. 709) instead of alike per channel. Uniform
   // is the default, as in libsquish and rgbcx, so PSNR compares across tools.
   bool perceptual = false;
-  // The mip chain's filter (MipChain.h): box, or Kaiser-windowed sinc. Not in presets yet.
+  // The mip chain's filter (MipChain.h): box, or Kaiser-windowed sinc.
   MipFilter mipFilter = MipFilter::Box;
+  // A roughness map's mips widened by the material's normal map's spread (RoughnessFold.h:
+  // Toksvig), so a bumpy surface far away stays as rough as its bumps make it look.
+  bool roughnessFromNormals = false;
 
   bool operator==(const CompressionSettings&) const = default;
 };
+
+// The mip chain a map ships with under `settings` (MipChain.h's MipChainSpec); a map without a
+// compression choice ships, as engines import it, with a full box-filtered chain.
+MipChainSpec shippedMipChain(const std::optional<CompressionSettings>& settings);
 
 std::span<const TextureFormatInfo> allTextureFormats();
 const TextureFormatInfo& textureFormatInfo(TextureFormat format);

@@ -46,6 +46,7 @@ Status writeCompressed(const Preset& preset, MapSlot slot, const std::string& fo
   job.slot = slot;
   job.settings = *choice;
   job.measure = false;
+  job.spreadNormals = preset.material.map(MapSlot::Normal).image;
   Result<CompressionOutcome> outcome = runCompressionJob(job, control);
   if (!outcome) {
     const std::string& source = preset.material.map(slot).sourcePath;

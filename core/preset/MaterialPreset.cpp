@@ -138,6 +138,17 @@ MapCompression readCompression(const QJsonObject& object, const std::string& slo
   }
   // "perceptual": BC1-BC3 colour error weighed by luminance (absent: uniform weights).
   compression.perceptual = object.value(QStringLiteral("perceptual")).toBool(false);
+  // "mipFilter": the mip chain's filter, box or kaiser (absent: box).
+  const std::string filter =
+      object.value(QStringLiteral("mipFilter")).toString(QStringLiteral("box")).toStdString();
+  if (const std::optional<MipFilter> mipFilter = findMipFilter(filter)) {
+    compression.mipFilter = *mipFilter;
+  } else {
+    problems.add(slot + " map: mip filter '" + filter + "' is not box or kaiser; box used");
+  }
+  // "roughnessFromNormals": a roughness map's mips widened by the normal map's spread.
+  compression.roughnessFromNormals =
+      object.value(QStringLiteral("roughnessFromNormals")).toBool(false);
   return compression;
 }
 
@@ -441,6 +452,10 @@ QJsonObject compressionJson(const CompressionSettings& compression) {
     choice.insert(QStringLiteral("zstd"), compression.zstdLevel);
   if (compression.perceptual)
     choice.insert(QStringLiteral("perceptual"), true);
+  if (compression.mipFilter != MipFilter::Box)
+    choice.insert(QStringLiteral("mipFilter"), qstr(mipFilterName(compression.mipFilter)));
+  if (compression.roughnessFromNormals)
+    choice.insert(QStringLiteral("roughnessFromNormals"), true);
   return choice;
 }
 

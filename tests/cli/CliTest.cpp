@@ -1,6 +1,8 @@
 // relief-cli as a user runs it: on the samples, and on bad input (each must be a clear error
 // naming the file, a non-zero exit and no crash). `render` runs under the test's X display.
 #include "cli/CliRunner.h"
+#include "core/compression/Compressor.h"
+#include "core/compression/MipChain.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
 #include "support/ImageCompare.h"
@@ -453,6 +455,48 @@ TEST(Cli, RenderTakesTechniqueViewMeshAndFormat) {
   EXPECT_TRUE(offGrid);
 }
 
+// --farther N looks as from N times farther: the Mip level view (textureQueryLod of the height
+// map, as EXR data) reads log2(N) levels further down at every pixel, away from the chain's ends;
+// a distance outside 1..64 is a usage error.
+TEST(Cli, RenderFartherSamplesLog2NLevelsFurtherDown) {
+  const std::string folder = scratchFolder();
+  const auto mipLevels = [&](const QString& farther) {
+    const std::string out = folder + "/mip" + farther.toStdString() + ".exr";
+    CliRun run =
+        runCli({QStringLiteral("render"), q(samplePreset("cobblestones")), QStringLiteral("--view"),
+                QStringLiteral("mip"), QStringLiteral("--format"), QStringLiteral("exr"),
+                QStringLiteral("--size"), QStringLiteral("160x100"), QStringLiteral("--farther"),
+                farther, QStringLiteral("--out"), q(out)});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    core::Result<core::Image> image = core::loadImage(out);
+    EXPECT_TRUE(image.ok()) << image.error();
+    return image.ok() ? std::move(image).value() : core::Image();
+  };
+  const core::Image near = mipLevels(QStringLiteral("1"));
+  const core::Image far = mipLevels(QStringLiteral("8"));
+  ASSERT_EQ(near.width(), far.width());
+  const int top = core::mipLevelCount(1024, 1024) - 1;
+  std::vector<double> differences;
+  for (int y = 0; y < near.height(); ++y) {
+    for (int x = 0; x < near.width(); ++x) {
+      if (near.at(x, y, 3) <= 0.0f || far.at(x, y, 0) >= float(top) - 0.5f)
+        continue;
+      differences.push_back(double(far.at(x, y, 0)) - near.at(x, y, 0));
+    }
+  }
+  ASSERT_GT(differences.size(), 2000u);
+  std::nth_element(differences.begin(),
+                   differences.begin() + std::ptrdiff_t(differences.size() / 2), differences.end());
+  EXPECT_NEAR(differences[differences.size() / 2], 3.0, 0.1) << "log2(8) levels further";
+  for (const char* bad : {"0", "65", "far"}) {
+    CliRun run = runCli({QStringLiteral("render"), q(samplePreset("cobblestones")),
+                         QStringLiteral("--farther"), QString::fromLatin1(bad),
+                         QStringLiteral("--out"), q(folder + "/bad.png")});
+    EXPECT_EQ(run.exitCode, 2) << bad;
+    EXPECT_NE(run.err.find("--farther"), std::string::npos) << run.err;
+  }
+}
+
 // --shading pbr with --format exr writes the linear radiance, unclamped: the highlight of a
 // smooth metal on a sphere is far brighter than 1 (GGX's peak at roughness 0.2 is about 200 per
 // steradian). A shading that does not exist is refused with the choices.
@@ -719,6 +763,50 @@ TEST(Cli, CompressTakesTheKaiserMipFilter) {
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("not box or kaiser"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(folder + "/x.dds"));
+}
+
+// compress --roughness-from-normals: a roughness map's mips widened by the normal map's spread
+// are rougher than the plain chain's far down (the cobblestones' bumps), level 0 is the map as it
+// is; without --mips it is a usage error, and a normal map of another size is refused by name.
+TEST(Cli, CompressFoldsTheNormalsSpreadIntoRoughness) {
+  const std::string folder = scratchFolder();
+  core::Image flat(1024, 1024, 1);
+  for (std::size_t i = 0; i < flat.valueCount(); ++i)
+    flat.data()[i] = 0.25f;
+  ASSERT_TRUE(core::saveImage(flat, folder + "/rough.png"));
+  const QString rough = q(folder + "/rough.png");
+  const QString normals = q(sourcePath("samples/cobblestones/cobblestones_normal.png"));
+  CliRun folded = runCli({"compress", "--in", rough, "--format", "bc4", "--mips",
+                          "--roughness-from-normals", normals, "--out", q(folder + "/f.ktx2")});
+  ASSERT_EQ(folded.exitCode, 0) << folded.err;
+  CliRun plain = runCli(
+      {"compress", "--in", rough, "--format", "bc4", "--mips", "--out", q(folder + "/p.ktx2")});
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  const auto levelMean = [](const std::string& path, int level) {
+    core::Result<core::CompressedTexture> texture = core::loadCompressedTexture(path);
+    EXPECT_TRUE(texture.ok()) << texture.error();
+    const core::Image decoded = core::decodeAsMap(texture.value(), level).value();
+    double sum = 0.0;
+    for (std::size_t i = 0; i < decoded.valueCount(); ++i)
+      sum += decoded.data()[i];
+    return sum / double(decoded.valueCount());
+  };
+  EXPECT_NEAR(levelMean(folder + "/f.ktx2", 0), 0.25, 1.0 / 255.0);
+  EXPECT_NEAR(levelMean(folder + "/p.ktx2", 4), 0.25, 1.0 / 255.0);
+  EXPECT_GT(levelMean(folder + "/f.ktx2", 4), 0.35) << "64 texels a level-4 texel: bumps fold in";
+  CliRun noMips = runCli({"compress", "--in", rough, "--format", "bc4", "--roughness-from-normals",
+                          normals, "--out", q(folder + "/x.ktx2")});
+  EXPECT_EQ(noMips.exitCode, 2);
+  EXPECT_NE(noMips.err.find("--mips"), std::string::npos) << noMips.err;
+  core::Image small(512, 512, 1);
+  ASSERT_TRUE(core::saveImage(small, folder + "/small.png"));
+  CliRun mismatch =
+      runCli({"compress", "--in", q(folder + "/small.png"), "--format", "bc4", "--mips",
+              "--roughness-from-normals", normals, "--out", q(folder + "/y.ktx2")});
+  EXPECT_EQ(mismatch.exitCode, 1);
+  EXPECT_NE(mismatch.err.find("small.png"), std::string::npos) << mismatch.err;
+  EXPECT_NE(mismatch.err.find("512x512"), std::string::npos) << mismatch.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/y.ktx2"));
 }
 
 // generate tileable: a crop of a sample set (which no longer tiles) comes out as tiles under the

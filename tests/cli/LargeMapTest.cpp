@@ -114,10 +114,12 @@ TEST_F(LargeMap, CompressHoldsTheMapAndItsBlocks) {
 }
 
 TEST_F(LargeMap, RenderHoldsTheMapAndTheTextureWithItsMips) {
-  // The float map (256 MiB) and the R32F texture with its mips (341 MiB) in llvmpipe: 2.33x.
+  // The float map (256 MiB), the R32F texture with its mips (341 MiB) in llvmpipe, and the two
+  // mip levels core's chain holds while it makes the next (levels 1 and 2, 80 MiB; the chain the
+  // map ships with, built on the CPU: renderer/TextureCache.h): 2.64x.
   EXPECT_LT(
       extraPeakMiB({"render", "--height"}, {"--size", "64x64", "--out", s_folder + "/render.png"}),
-      2.4 * kFloatMapMiB);
+      2.7 * kFloatMapMiB);
 }
 
 }  // namespace

@@ -65,8 +65,8 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   preset.material.setParameter(ParamId::ShadowMode, double(ShadowMode::Hard));
   preset.compression[std::size_t(MapSlot::Normal)] =
       CompressionSettings{TextureFormat::Bc5, CompressionQuality::Best, false, 12};
-  preset.compression[std::size_t(MapSlot::Color)] =
-      CompressionSettings{TextureFormat::Bc1, CompressionQuality::Fast, true, 0, true};
+  preset.compression[std::size_t(MapSlot::Color)] = CompressionSettings{
+      TextureFormat::Bc1, CompressionQuality::Fast, true, 0, true, MipFilter::Kaiser};
   OrbitCamera camera;
   camera.yawDeg = -40.0f;
   camera.target = glm::vec3(0.1f, 0.2f, 0.3f);
@@ -165,7 +165,7 @@ TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
             "{\"format\": \"relief-material\", \"version\": 2,"
             " \"maps\": {\"color\": {\"path\": \"" +
                 colorPath +
-                "\"},"
+                "\", \"compression\": {\"format\": \"bc1\", \"mipFilter\": \"lanczos9\"}},"
                 "            \"normal\": {\"path\": \"missing_normal.png\","
                 "                         \"compression\": {\"format\": \"zip\"}}},"
                 " \"technique\": \"warp-drive\","
@@ -181,6 +181,9 @@ TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
   const Material& material = loaded->preset.material;
   EXPECT_TRUE(material.hasMap(MapSlot::Color));
   EXPECT_FALSE(material.hasMap(MapSlot::Normal));
+  ASSERT_TRUE(loaded->preset.compression[std::size_t(MapSlot::Color)].has_value());
+  EXPECT_EQ(loaded->preset.compression[std::size_t(MapSlot::Color)]->mipFilter, MipFilter::Box)
+      << "an unknown mip filter falls back to box";
   EXPECT_EQ(material.parameter(ParamId::Tiling), parameterSpec(ParamId::Tiling).maximum);
   EXPECT_EQ(material.parameter(ParamId::HeightScale), parameterSpec(ParamId::HeightScale).maximum);
   std::string all;
@@ -188,10 +191,10 @@ TEST(MaterialPreset, LoadsTheRestAndReportsWhatIsWrong) {
     EXPECT_NE(warning.find("partial.relief"), std::string::npos) << warning;
     all += warning + "\n";
   }
-  for (const char* mention :
-       {"missing_normal.png", "warp-drive", "tiling", "specular", "bogus", "heightScale",
-        "normalYDown", "zip", "view.camera.pitch", "view.camera.distance", "view.light.color",
-        "view.display.exposure", "filmic", "view.environment.intensity", "starfield"}) {
+  for (const char* mention : {"missing_normal.png", "warp-drive", "tiling", "specular", "bogus",
+                              "heightScale", "normalYDown", "zip", "lanczos9", "view.camera.pitch",
+                              "view.camera.distance", "view.light.color", "view.display.exposure",
+                              "filmic", "view.environment.intensity", "starfield"}) {
     EXPECT_NE(all.find(mention), std::string::npos) << mention << " not in:\n" << all;
   }
 }

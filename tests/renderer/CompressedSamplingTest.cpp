@@ -9,10 +9,13 @@
 #include "core/compression/Bc7Block.h"
 #include "core/compression/BlockCodecs.h"
 #include "core/compression/Compressor.h"
+#include "core/compression/MipChain.h"
+#include "core/compression/RoughnessFold.h"
 #include "core/image/ColorSpace.h"
 #include "core/image/ImageIO.h"
 #include "renderer/CompressedUpload.h"
 #include "renderer/OpenGLProbe.h"
+#include "renderer/TextureCache.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -80,8 +83,12 @@ class CompressedSampling : public ::testing::Test {
     EXPECT_TRUE(uploaded) << "the driver refused " << core::textureFormatInfo(texture.format).name;
     if (!uploaded)
       return {};
-    const int width = texture.levels[std::size_t(level)].width;
-    const int height = texture.levels[std::size_t(level)].height;
+    return fetchLevel(*uploaded, texture.levels[std::size_t(level)].width,
+                      texture.levels[std::size_t(level)].height, level);
+  }
+
+  // The texels of `level` (width x height) as texelFetch reads them: RGBA floats.
+  std::vector<float> fetchLevel(QOpenGLTexture& uploaded, int width, int height, int level) {
     QOpenGLFramebufferObjectFormat format;
     format.setInternalTextureFormat(GL_RGBA32F);
     QOpenGLFramebufferObject target(width, height, format);
@@ -89,7 +96,7 @@ class CompressedSampling : public ::testing::Test {
     QOpenGLExtraFunctions& gl = *m_context.extraFunctions();
     gl.glViewport(0, 0, width, height);
     m_program.bind();
-    uploaded->bind(0);
+    uploaded.bind(0);
     m_program.setUniformValue("uTexture", 0);
     m_program.setUniformValue("uLevel", level);
     m_vao.bind();
@@ -319,6 +326,82 @@ TEST_F(CompressedSampling, EncodedTexturesAndMipLevelsAgree) {
         {72, 40, core::encodeAstc(format, core::CompressionQuality::Fast, false, rgba).value()});
     EXPECT_LE(worstDifference(texture, 0, 4), kTolerance) << core::textureFormatInfo(format).name;
   }
+}
+
+// An uncompressed map's texture holds core's mip chain (core/compression/MipChain.h, tested
+// against analytic levels in MipFilterTest), not the driver's glGenerateMipmap: every level of a
+// height (float, exact), colour (sRGB 8-bit: rounding plus the sampler's decode, kSrgbTolerance)
+// and normal map (16-bit) equals core's level for box and Kaiser, the two chains differ, and a
+// chain without mipmaps has level 0 alone.
+TEST_F(CompressedSampling, MapTexturesHoldCoresMipChain) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const auto noise = [&](int channels) {
+    core::Image image(37, 20, channels);  // odd sizes: partial texels weigh in the box
+    for (std::size_t i = 0; i < image.valueCount(); ++i)
+      image.data()[i] = unit(random);
+    return image;
+  };
+  const std::pair<core::MapSlot, int> slots[] = {
+      {core::MapSlot::Height, 1}, {core::MapSlot::Color, 4}, {core::MapSlot::Normal, 4}};
+  for (const auto& [slot, channels] : slots) {
+    const core::Image image = noise(channels);
+    const double tolerance = slot == core::MapSlot::Height  ? 1e-6
+                             : slot == core::MapSlot::Color ? kSrgbTolerance
+                                                            : 0.5 / 65535.0 + 1e-6;
+    for (core::MipFilter filter : {core::MipFilter::Box, core::MipFilter::Kaiser}) {
+      const std::vector<core::Image> chain = core::buildMipChain(image, slot, filter);
+      std::unique_ptr<QOpenGLTexture> texture =
+          renderer::createMapTexture(image, slot, {true, filter});
+      ASSERT_EQ(texture->mipLevels(), int(chain.size()));
+      for (int level = 1; level < int(chain.size()); ++level) {
+        const core::Image& ours = chain[std::size_t(level)];
+        const std::vector<float> gpu = fetchLevel(*texture, ours.width(), ours.height(), level);
+        double worst = 0.0;
+        for (int y = 0; y < ours.height(); ++y) {
+          for (int x = 0; x < ours.width(); ++x) {
+            for (int c = 0; c < (slot == core::MapSlot::Height ? 1 : 3); ++c) {
+              float theirs =
+                  gpu[(std::size_t(y) * std::size_t(ours.width()) + std::size_t(x)) * 4 + c];
+              if (slot == core::MapSlot::Color)
+                theirs = core::linearToSrgb(theirs);
+              worst = std::max(worst, double(std::abs(theirs - ours.at(x, y, c))));
+            }
+          }
+        }
+        EXPECT_LE(worst, tolerance)
+            << core::mapSlotName(slot) << " " << core::mipFilterName(filter) << " level " << level;
+      }
+    }
+    const std::vector<core::Image> box = core::buildMipChain(image, slot, core::MipFilter::Box);
+    const std::vector<core::Image> kaiser =
+        core::buildMipChain(image, slot, core::MipFilter::Kaiser);
+    EXPECT_NE(box[2], kaiser[2]) << "the filters give different levels to tell apart";
+    EXPECT_EQ(renderer::createMapTexture(image, slot, {false, core::MipFilter::Box})->mipLevels(),
+              1);
+  }
+  // A roughness map's chain with the normals' spread folded in (core/compression/RoughnessFold.h)
+  // holds core's folded levels, which are rougher than the plain ones.
+  const core::Image roughness = noise(1);
+  const core::Image normals = noise(3);
+  const std::vector<core::Image> folded =
+      core::foldedRoughnessLevels(roughness, normals, core::MipFilter::Box);
+  std::unique_ptr<QOpenGLTexture> texture = renderer::createMapTexture(
+      roughness, core::MapSlot::Roughness, {true, core::MipFilter::Box, true}, &normals);
+  for (int level = 1; level <= int(folded.size()); ++level) {
+    const core::Image& ours = folded[std::size_t(level - 1)];
+    const std::vector<float> gpu = fetchLevel(*texture, ours.width(), ours.height(), level);
+    for (int y = 0; y < ours.height(); ++y) {
+      for (int x = 0; x < ours.width(); ++x) {
+        EXPECT_NEAR(gpu[(std::size_t(y) * std::size_t(ours.width()) + std::size_t(x)) * 4],
+                    ours.at(x, y, 0), 1e-6)
+            << "level " << level;
+      }
+    }
+  }
+  const std::vector<core::Image> plain =
+      core::buildMipChain(roughness, core::MapSlot::Roughness, core::MipFilter::Box);
+  EXPECT_GT(folded[0].at(0, 0, 0), plain[1].at(0, 0, 0));
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/document/MaterialDocument.h"
+#include "ui/document/ViewDocument.h"
+#include "ui/panels/CompressPanel.h"
 #include "ui/panels/EnvironmentPanel.h"
 #include "ui/panels/LightPanel.h"
 #include "ui/panels/ParameterPanel.h"
@@ -433,6 +435,85 @@ TEST_F(ViewportControls, NothingRedrawsWhenNothingChanged) {
   viewDocument()->setLight(light);  // a change request: one redraw
   QTest::qWait(200);
   EXPECT_GE(frames.count(), 1);
+}
+
+// The Distance box and ] / [ look from farther (a view option: no undo step); the Compress
+// panel's Mipmaps and Mip filter write one chain into every compression choice (one undo step
+// each) and the viewport samples that chain: without mipmaps the far frame changes.
+TEST_F(ViewportControls, DistanceAndTheShippedMipChain) {
+  m_window->resize(500, 400);
+  const core::Image near = grabbed();
+  const int undoSteps = document()->undoStack()->count();
+  auto* distance = m_window->findChild<QComboBox*>(QStringLiteral("viewDistance"));
+  ASSERT_NE(distance, nullptr);
+  const int eight = distance->findData(8);
+  ASSERT_GE(eight, 0);
+  distance->setCurrentIndex(eight);
+  Q_EMIT distance->activated(eight);
+  EXPECT_EQ(viewDocument()->viewDistance(), 8);
+  EXPECT_EQ(viewport()->frameSettings().tiles.distance, 8);
+  const core::Image far = grabbed();
+  EXPECT_TRUE(frameChanged(near, far));
+  EXPECT_EQ(document()->undoStack()->count(), undoSteps) << "a view option, not an edit";
+  auto* farther = m_window->findChild<QAction*>(QStringLiteral("fartherAction"));
+  auto* closer = m_window->findChild<QAction*>(QStringLiteral("closerAction"));
+  ASSERT_TRUE(farther && closer);
+  EXPECT_EQ(farther->shortcut(), QKeySequence(QStringLiteral("]")));
+  farther->trigger();
+  EXPECT_EQ(viewDocument()->viewDistance(), 16);
+  EXPECT_EQ(distance->currentData().toInt(), 16);
+  closer->trigger();
+  EXPECT_EQ(viewDocument()->viewDistance(), 8);
+
+  ui::CompressPanel* panel = m_window->compressPanel();
+  document()->setCompression(
+      core::MapSlot::Color,
+      core::CompressionSettings{core::TextureFormat::Bc1, core::CompressionQuality::Fast, true});
+  const auto colourChain = [&] {
+    return viewport()->frameSettings().mipChains[std::size_t(core::MapSlot::Color)];
+  };
+  EXPECT_EQ(colourChain(), (core::MipChainSpec{true, core::MipFilter::Box}));
+  const int kaiser = panel->mipFilterBox()->findData(int(core::MipFilter::Kaiser));
+  panel->mipFilterBox()->setCurrentIndex(kaiser);
+  Q_EMIT panel->mipFilterBox()->activated(kaiser);
+  EXPECT_EQ(document()->compression(core::MapSlot::Color)->mipFilter, core::MipFilter::Kaiser);
+  EXPECT_EQ(colourChain(), (core::MipChainSpec{true, core::MipFilter::Kaiser}));
+  const core::Image kaiserFrame = grabbed();
+  const int beforeMipmaps = document()->undoStack()->count();
+  panel->mipmapsBox()->setChecked(false);
+  EXPECT_EQ(document()->undoStack()->count(), beforeMipmaps + 1);
+  EXPECT_FALSE(colourChain().mipmaps);
+  EXPECT_FALSE(panel->mipFilterBox()->isEnabled());
+  EXPECT_TRUE(frameChanged(kaiserFrame, grabbed())) << "level 0 alone aliases far away";
+  document()->undoStack()->undo();
+  EXPECT_TRUE(colourChain().mipmaps);
+  EXPECT_TRUE(panel->mipmapsBox()->isChecked()) << "the box follows the document";
+
+  // Roughness from normals: only for a compressed roughness map with a normal map beside it; it
+  // writes the roughness choice (one undo step) and the viewport samples the folded chain.
+  QCheckBox* fold = panel->roughnessFoldBox();
+  EXPECT_FALSE(fold->isEnabled()) << "no roughness map yet";
+  const core::Image& normals = *document()->material().image(core::MapSlot::Normal);
+  auto roughness = std::make_shared<core::Image>(normals.width(), normals.height(), 1);
+  for (std::size_t i = 0; i < roughness->valueCount(); ++i)
+    roughness->data()[i] = 0.25f;
+  document()->setMap(core::MapSlot::Roughness, roughness, QString());
+  document()->setCompression(
+      core::MapSlot::Roughness,
+      core::CompressionSettings{core::TextureFormat::Bc4, core::CompressionQuality::Fast, true});
+  ASSERT_TRUE(fold->isEnabled());
+  const core::Image plainFrame = grabbed();
+  const int beforeFold = document()->undoStack()->count();
+  fold->setChecked(true);
+  EXPECT_EQ(document()->undoStack()->count(), beforeFold + 1);
+  EXPECT_TRUE(document()->compression(core::MapSlot::Roughness)->roughnessFromNormals);
+  EXPECT_TRUE(viewport()
+                  ->frameSettings()
+                  .mipChains[std::size_t(core::MapSlot::Roughness)]
+                  .foldNormalSpread);
+  EXPECT_TRUE(frameChanged(plainFrame, grabbed())) << "far away the folded roughness shows";
+  document()->undoStack()->undo();
+  EXPECT_FALSE(fold->isChecked());
 }
 
 // The Preview box and E switch the viewport to an engine's trace (a view option: no undo step),

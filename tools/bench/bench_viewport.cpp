@@ -10,9 +10,10 @@
 //
 // The quadtree's and cone's rows include nothing of building their pyramid and cone map (once
 // per height map, not per frame); the bench prints those builds' times for a 4096x4096 map after
-// the tables.
+// the tables, and what uploading a 4096x4096 map with its mip chain takes.
 //
-// Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5] [--shading-only]
+// Run: xvfb-run -a build/release/tools/bench-viewport [repeats, default 5] [--shading-only |
+// --uploads-only]
 #include "core/mesh/MeshPrimitives.h"
 #include "core/preset/MaterialPreset.h"
 #include "core/shading/EnvironmentMaps.h"
@@ -20,11 +21,13 @@
 #include "core/tracing/MaxMipPyramid.h"
 #include "renderer/MaterialRenderer.h"
 #include "renderer/OpenGLProbe.h"
+#include "renderer/TextureCache.h"
 #include "tools/bench/MedianTime.h"
 
 #include <QGuiApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QSurfaceFormat>
 
 #include <algorithm>
@@ -90,6 +93,35 @@ bool benchTracerBuilds(const core::Material& base) {
       pyramidMs, conesMs, double(ratios[ratios.size() / 2]));
 
   return true;
+}
+
+// Uploading a 4096x4096 map: level 0 alone, and with core's box and Kaiser chains (what the
+// viewport samples: the chain the map ships with, renderer/TextureCache.h), once per map and
+// chain change, never per frame. Each is draw-independent: upload + glFinish.
+void benchMapUploads(const core::Material& base) {
+  std::printf("\n4096x4096 map uploads (median of 3; upload + glFinish):\n");
+  QOpenGLFunctions* gl = QOpenGLContext::currentContext()->functions();
+  for (core::MapSlot slot : {core::MapSlot::Color, core::MapSlot::Normal, core::MapSlot::Height}) {
+    const core::Image& source = *base.map(slot).image;
+    core::Image tiled(4096, 4096, source.channels(), source.colorSpace());
+    for (int y = 0; y < tiled.height(); ++y) {
+      for (int x = 0; x < tiled.width(); ++x) {
+        for (int c = 0; c < source.channels(); ++c)
+          tiled.at(x, y, c) = source.at(x % source.width(), y % source.height(), c);
+      }
+    }
+    const auto upload = [&](core::MipChainSpec chain) {
+      return bench::medianMilliseconds(3, [&] {
+        auto texture = renderer::createMapTexture(tiled, slot, chain);
+        gl->glFinish();
+      });
+    };
+    const double alone = upload({false, core::MipFilter::Box});
+    const double box = upload({true, core::MipFilter::Box});
+    const double kaiser = upload({true, core::MipFilter::Kaiser});
+    std::printf("  %-7s level 0 alone %6.0f ms, box chain %6.0f ms, Kaiser chain %6.0f ms\n",
+                std::string(core::mapSlotName(slot)).c_str(), alone, box, kaiser);
+  }
 }
 
 // Prefiltering each built-in, and a 4096 x 2048 environment (the working width files are
@@ -244,6 +276,7 @@ int main(int argc, char* argv[]) {
   QGuiApplication application(argc, argv);
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
   const bool shadingOnly = argc > 2 && std::string(argv[2]) == "--shading-only";
+  const bool uploadsOnly = argc > 2 && std::string(argv[2]) == "--uploads-only";
   const int width = 1280, height = 720;
 
   if (auto probe = renderer::probeOpenGL(); !probe) {
@@ -281,6 +314,10 @@ int main(int argc, char* argv[]) {
     return 1;
   }
   materialRenderer.setMesh(plane);
+  if (uploadsOnly) {
+    benchMapUploads(base);
+    return 0;
+  }
 
   const FrameTimer timeFrame = [&](const core::Material& material, const ViewSetup& setup) {
     materialRenderer.setMaterial(material);
@@ -316,6 +353,7 @@ int main(int argc, char* argv[]) {
     return 0;
   if (!benchTracerBuilds(base))
     return 1;
+  benchMapUploads(base);
   benchEnvironmentPrefilter(materialRenderer);
   materialRenderer.releaseResources();
   context.doneCurrent();

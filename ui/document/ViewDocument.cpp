@@ -151,6 +151,14 @@ void ViewDocument::setTilePreview(int repeats, bool seams, bool hex) {
   Q_EMIT tilePreviewChanged();
 }
 
+void ViewDocument::setViewDistance(int distance) {
+  distance = std::clamp(distance, 1, kMaxViewDistance);
+  if (distance == m_viewDistance)
+    return;
+  m_viewDistance = distance;
+  Q_EMIT tilePreviewChanged();
+}
+
 void ViewDocument::setEnginePreview(std::optional<core::Engine> engine) {
   if (engine == m_enginePreview)
     return;

@@ -94,6 +94,12 @@ class ViewDocument : public QObject {
   bool tileSeams() const { return m_tileSeams; }
   bool hexTiling() const { return m_hexTiling; }
   void setTilePreview(int repeats, bool seams, bool hex);
+  // The view distance, navigation too: the material looked at as from `distance` times farther
+  // (renderer/FrameSettings.h, TilePreview::distance), so the mip levels an engine samples there
+  // are what the viewport shows; 1 to kMaxViewDistance. Signalled as tilePreviewChanged.
+  static constexpr int kMaxViewDistance = 64;
+  int viewDistance() const { return m_viewDistance; }
+  void setViewDistance(int distance);
   // The engine preview, navigation too: the relief traced as that engine's exported material
   // traces it (core/exporters/EnginePreview.h); none: Relief's own technique.
   std::optional<core::Engine> enginePreview() const { return m_enginePreview; }
@@ -144,6 +150,7 @@ class ViewDocument : public QObject {
   core::DisplayTransform m_display;
   core::DebugView m_debugView = core::DebugView::Shading;
   int m_tileRepeats = 1;
+  int m_viewDistance = 1;
   bool m_tileSeams = false;
   bool m_hexTiling = false;
   std::optional<core::Engine> m_enginePreview;

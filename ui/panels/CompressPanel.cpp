@@ -106,8 +106,25 @@ void CompressPanel::createOptionsAndActions() {
   m_mipmaps = new QCheckBox(tr("Mipmaps"), this);
   m_mipmaps->setToolTip(
       tr("A full mip chain: colour filtered in linear light, normals "
-         "renormalised, heights averaged; each level compressed"));
+         "renormalised, heights averaged; each level compressed. Without it the map ships "
+         "as level 0 alone, and the viewport shows what that does far away (View > Distance)."));
   m_mipmaps->setChecked(true);
+  m_mipFilter = new QComboBox(this);
+  m_mipFilter->setObjectName(QStringLiteral("mipFilter"));
+  m_mipFilter->addItem(tr("Box"), int(core::MipFilter::Box));
+  m_mipFilter->addItem(tr("Kaiser"), int(core::MipFilter::Kaiser));
+  m_mipFilter->setToolTip(
+      tr("How each mip level is filtered from the one above: Box averages 2×2 texels; Kaiser "
+         "(a windowed sinc, NVIDIA Texture Tools' default) keeps the distant levels sharper "
+         "without the box's aliasing. The viewport samples this chain, original or compressed: "
+         "View > Distance shows the levels a far view reads."));
+  m_roughnessFold = new QCheckBox(tr("Roughness from normals"), this);
+  m_roughnessFold->setObjectName(QStringLiteral("roughnessFromNormals"));
+  m_roughnessFold->setToolTip(
+      tr("Widen the roughness map's mips by the normal map's spread under each texel "
+         "(Toksvig): far away, bumps average into a flat normal, and without this the surface "
+         "turns into a mirror with a shimmering highlight. Needs a compressed roughness map with "
+         "mipmaps and a normal map of its size; the viewport and the export use it."));
   m_zstd = new QSpinBox(this);
   m_zstd->setRange(0, core::kMaxZstdLevel);
   m_zstd->setSpecialValueText(tr("off"));
@@ -173,10 +190,12 @@ void CompressPanel::layOut(QGridLayout* formats) {
   layout->addLayout(formats);
   auto* options = new QHBoxLayout;
   options->addWidget(m_mipmaps);
+  options->addWidget(m_mipFilter);
   options->addStretch(1);
   options->addWidget(new QLabel(tr("KTX2 Zstandard:"), this));
   options->addWidget(m_zstd);
   layout->addLayout(options);
+  layout->addWidget(m_roughnessFold);
   layout->addLayout(actions);
   layout->addWidget(m_progress);
   layout->addWidget(m_status);
@@ -222,6 +241,43 @@ void CompressPanel::connectSignals() {
     dropStalePreviews();
   });
   connect(m_document, &MaterialDocument::compressionChanged, this, [this] { syncFromDocument(); });
+  connect(m_mipmaps, &QCheckBox::toggled, this, [this] { writeMipChain(); });
+  connect(m_mipFilter, &QComboBox::activated, this, [this] { writeMipChain(); });
+  connect(m_roughnessFold, &QCheckBox::toggled, this, [this](bool on) {
+    core::MapCompression choice = m_document->compression(core::MapSlot::Roughness);
+    if (m_syncing || !choice || choice->roughnessFromNormals == on)
+      return;
+    choice->roughnessFromNormals = on;
+    m_document->setCompression(core::MapSlot::Roughness, choice);
+  });
+}
+
+// The mip chain is one choice for every compressed map (as the panel compresses them): written
+// into each slot's choice, so presets save it and the viewport samples it, as one undo step.
+void CompressPanel::writeMipChain() {
+  m_mipFilter->setEnabled(m_mipmaps->isChecked());
+  if (m_syncing)
+    return;
+  const bool mipmaps = m_mipmaps->isChecked();
+  const auto filter = core::MipFilter(m_mipFilter->currentData().toInt());
+  bool changes = false;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    const core::MapCompression& choice = m_document->compression(slot);
+    changes = changes || (choice && (choice->mipmaps != mipmaps || choice->mipFilter != filter));
+  }
+  if (!changes)
+    return;
+  m_document->undoStack()->beginMacro(mipmaps ? tr("Mip chain: %1").arg(m_mipFilter->currentText())
+                                              : tr("No mipmaps"));
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    core::MapCompression choice = m_document->compression(slot);
+    if (!choice)
+      continue;
+    choice->mipmaps = mipmaps;
+    choice->mipFilter = filter;
+    m_document->setCompression(slot, choice);
+  }
+  m_document->undoStack()->endMacro();
 }
 
 void CompressPanel::showFinished(const std::vector<core::CompressionOutcome>& outcomes) {
@@ -269,6 +325,20 @@ void CompressPanel::syncFromDocument() {
     row.quality->setCurrentIndex(
         row.quality->findData(int(choice ? choice->quality : core::CompressionQuality::Normal)));
   }
+  // The chain shown is the first chosen map's (the panel writes one chain into all of them).
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    if (const core::MapCompression& choice = m_document->compression(slot)) {
+      m_mipmaps->setChecked(choice->mipmaps);
+      m_mipFilter->setCurrentIndex(m_mipFilter->findData(int(choice->mipFilter)));
+      break;
+    }
+  }
+  m_mipFilter->setEnabled(m_mipmaps->isChecked());
+  const core::MapCompression& roughness = m_document->compression(core::MapSlot::Roughness);
+  m_roughnessFold->setEnabled(roughness && roughness->mipmaps &&
+                              m_document->material().hasMap(core::MapSlot::Roughness) &&
+                              m_document->material().hasMap(core::MapSlot::Normal));
+  m_roughnessFold->setChecked(roughness && roughness->roughnessFromNormals);
   m_syncing = false;
 }
 
@@ -279,13 +349,16 @@ void CompressPanel::writeChoice(core::MapSlot slot) {
   const int format = row.format->currentData().toInt();
   core::MapCompression choice;
   if (format != kUncompressed) {
-    // A preset's choice keeps its mipmap and perceptual flags; a new one has mipmaps, as shipped
-    // textures do.
+    // A preset's choice keeps its Zstandard level and perceptual flag; the mip chain is the
+    // panel's (one for every map).
     const core::MapCompression& previous = m_document->compression(slot);
-    choice = core::CompressionSettings{
-        core::TextureFormat(format), core::CompressionQuality(row.quality->currentData().toInt()),
-        previous ? previous->mipmaps : true, previous ? previous->zstdLevel : m_zstd->value(),
-        previous && previous->perceptual};
+    choice = core::CompressionSettings{core::TextureFormat(format),
+                                       core::CompressionQuality(row.quality->currentData().toInt()),
+                                       m_mipmaps->isChecked(),
+                                       previous ? previous->zstdLevel : m_zstd->value(),
+                                       previous && previous->perceptual,
+                                       core::MipFilter(m_mipFilter->currentData().toInt()),
+                                       previous && previous->roughnessFromNormals};
   }
   m_document->setCompression(slot, choice);
 }
@@ -318,12 +391,20 @@ void CompressPanel::compress() {
     const int format = row.format->currentData().toInt();
     if (!material.hasMap(slot) || format == kUncompressed)
       continue;
-    jobs.push_back(
-        {material.map(slot).image,
-         slot,
-         {core::TextureFormat(format), core::CompressionQuality(row.quality->currentData().toInt()),
-          m_mipmaps->isChecked(), m_zstd->value()},
-         heightScale});
+    const core::MapCompression& choice = m_document->compression(slot);
+    core::CompressionJob job;
+    job.map = material.map(slot).image;
+    job.slot = slot;
+    job.settings = {core::TextureFormat(format),
+                    core::CompressionQuality(row.quality->currentData().toInt()),
+                    m_mipmaps->isChecked(),
+                    m_zstd->value(),
+                    false,
+                    core::MipFilter(m_mipFilter->currentData().toInt()),
+                    choice && choice->roughnessFromNormals};
+    job.heightScale = heightScale;
+    job.spreadNormals = material.map(core::MapSlot::Normal).image;
+    jobs.push_back(std::move(job));
   }
   if (jobs.empty()) {
     m_status->setText(tr("The material has no maps to compress."));

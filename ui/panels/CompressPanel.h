@@ -38,6 +38,9 @@ class CompressPanel : public QWidget {
   QComboBox* formatBox(core::MapSlot slot) const { return m_rows[std::size_t(slot)].format; }
   QComboBox* qualityBox(core::MapSlot slot) const { return m_rows[std::size_t(slot)].quality; }
   QComboBox* viewBox() const { return m_view; }
+  QCheckBox* mipmapsBox() const { return m_mipmaps; }
+  QComboBox* mipFilterBox() const { return m_mipFilter; }
+  QCheckBox* roughnessFoldBox() const { return m_roughnessFold; }
   QPushButton* compressButton() const { return m_compress; }
   QPushButton* cancelButton() const { return m_cancel; }
   QTableWidget* resultsTable() const { return m_results; }
@@ -72,6 +75,7 @@ class CompressPanel : public QWidget {
   void showFinished(const std::vector<core::CompressionOutcome>& outcomes);
   void syncFromDocument();
   void writeChoice(core::MapSlot slot);
+  void writeMipChain();
   void dropStalePreviews();
   void showOutcomes();
   void showPreviews();  // the results as the view document's compressed previews
@@ -82,6 +86,8 @@ class CompressPanel : public QWidget {
   CompressionRunner* m_runner;
   std::array<Row, core::kMapSlotCount> m_rows;
   QCheckBox* m_mipmaps;
+  QComboBox* m_mipFilter;
+  QCheckBox* m_roughnessFold;
   QSpinBox* m_zstd;
   QPushButton* m_compress;
   QPushButton* m_cancel;

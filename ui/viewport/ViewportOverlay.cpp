@@ -38,14 +38,14 @@ void paintViewportOverlay(QPainter& painter, const QRect& area, const ViewportOv
   }
   if (overlay.legend)
     renderer::drawHeatmapLegend(painter, area, *overlay.legend);
-  if (!overlay.engineLabel.isEmpty()) {
+  if (!overlay.caption.isEmpty()) {
     // On a dark band, so the caption reads over any material.
     const int height = painter.fontMetrics().height() + 8;
-    const int width = painter.fontMetrics().horizontalAdvance(overlay.engineLabel) + 16;
+    const int width = painter.fontMetrics().horizontalAdvance(overlay.caption) + 16;
     const QRect band(area.left() + 8, area.bottom() - height - 8, width, height);
     painter.fillRect(band, QColor(0, 0, 0, 160));
     painter.setPen(QColor(255, 214, 120));
-    painter.drawText(band, Qt::AlignCenter, overlay.engineLabel);
+    painter.drawText(band, Qt::AlignCenter, overlay.caption);
   }
   if (overlay.dividerX >= 0) {
     const int x = overlay.dividerX;

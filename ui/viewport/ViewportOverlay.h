@@ -1,6 +1,6 @@
 // ViewportOverlay: what the viewport paints over its frame with QPainter: the error view's heat
 // map (or a note while it is traced) and its numbers, a debug view's heat-map legend, the A/B
-// divider with its two labels, and which engine a preview traces as.
+// divider with its two labels, which engine a preview traces as and how far the view looks from.
 #pragma once
 
 #include "renderer/HeatmapLegend.h"
@@ -26,9 +26,10 @@ struct ViewportOverlay {
   std::optional<renderer::HeatmapLegend> legend;
   int dividerX = -1;  // -1: no divider
   QString leftLabel, rightLabel;
-  QString engineLabel;  // an engine preview's caption, bottom left; empty: Relief's own
+  // Bottom left: an engine preview's caption and the view distance; empty: Relief's own, near.
+  QString caption;
 
-  bool isEmpty() const { return !errorView && !legend && dividerX < 0 && engineLabel.isEmpty(); }
+  bool isEmpty() const { return !errorView && !legend && dividerX < 0 && caption.isEmpty(); }
 };
 
 void paintViewportOverlay(QPainter& painter, const QRect& area, const ViewportOverlay& overlay);

@@ -76,6 +76,7 @@ ViewportWidget::ViewportWidget(MaterialDocument* document, ViewDocument* view, Q
   connect(document, &MaterialDocument::techniqueChanged, this, materialTouched);
   connect(document, &MaterialDocument::mapChanged, this, materialTouched);
   connect(document, &MaterialDocument::materialReset, this, materialTouched);
+  connect(document, &MaterialDocument::compressionChanged, this, materialTouched);
   for (auto signal : {&ViewDocument::cameraChanged, &ViewDocument::lightChanged,
                       &ViewDocument::environmentChanged, &ViewDocument::displayChanged,
                       &ViewDocument::debugViewChanged, &ViewDocument::compressedPreviewChanged,
@@ -125,7 +126,8 @@ void ViewportWidget::showViewDocument() {
   m_frame.view.environment = m_view->environment();
   m_frame.view.display = m_view->display();
   m_frame.debugView = m_view->debugView();
-  m_frame.tiles = {m_view->tileRepeats(), m_view->tileSeams(), m_view->hexTiling()};
+  m_frame.tiles = {m_view->tileRepeats(), m_view->tileSeams(), m_view->hexTiling(),
+                   m_view->viewDistance()};
   m_frame.engine = m_view->enginePreview();
   if (!m_framing)
     changed();
@@ -158,6 +160,9 @@ void ViewportWidget::setNativeCompressedUploads(bool native) {
 
 std::pair<core::Material, renderer::FrameSettings> ViewportWidget::shownFrame() const {
   renderer::FrameSettings frame = m_frame;
+  // The chains the maps ship with, original and compressed alike (a preview carries its own).
+  for (core::MapSlot slot : core::kAllMapSlots)
+    frame.mipChains[std::size_t(slot)] = core::shippedMipChain(m_document->compression(slot));
   if (!m_view->showsCompressed())
     return {m_document->material(), frame};
   // The compressed view replaces a held A/B comparison while it is on.
@@ -404,10 +409,15 @@ void ViewportWidget::paintOverlays() {
       overlay.rightLabel = tr("B (held): %1").arg(label(m_frame.split->material));
     }
   }
+  QStringList captions;
   if (m_frame.engine) {
-    overlay.engineLabel = tr("%1 preview: the relief as the exported material traces it")
-                              .arg(toQString(core::engineInfo(*m_frame.engine).label));
+    captions << tr("%1 preview: the relief as the exported material traces it")
+                    .arg(toQString(core::engineInfo(*m_frame.engine).label));
   }
+  if (m_frame.tiles.distance > 1) {
+    captions << tr("Seen from ×%1 farther: the mip levels shipped").arg(m_frame.tiles.distance);
+  }
+  overlay.caption = captions.join(QStringLiteral("  ·  "));
   if (overlay.isEmpty())
     return;  // nothing drawn over the frame
   QPainter painter(this);

@@ -204,6 +204,8 @@ void MainWindow::createMenus() {
   }
   view->addAction(m_toolBar->compareAction());
   view->addAction(m_toolBar->holdAction());
+  view->addAction(m_toolBar->fartherAction());
+  view->addAction(m_toolBar->closerAction());
   view->addAction(m_toolBar->engineCycleAction());
   view->addAction(m_toolBar->engineGridAction());
   QAction* costTable =

@@ -14,6 +14,8 @@
 #include <QLabel>
 #include <QSignalBlocker>
 
+#include <algorithm>
+
 namespace relief::ui::inline window {
 
 ViewToolBar::ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* parent)
@@ -94,6 +96,7 @@ ViewToolBar::ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* 
     m_seams->setChecked(m_view->tileSeams());
     m_hex->setChecked(m_view->hexTiling());
   });
+  createDistanceControls();
   addSeparator();
 
   // The engine preview: the relief as an engine's exported material traces it.
@@ -159,6 +162,38 @@ ViewToolBar::ViewToolBar(ViewDocument* view, ViewportWidget* viewport, QWidget* 
     m_compare->setChecked(true);
   });
   connect(view, &ViewDocument::meshChanged, this, [this] { showMeshSource(m_view->meshSource()); });
+}
+
+// The view distance: powers of two, as mip levels halve; ] and [ step through them (View menu).
+void ViewToolBar::createDistanceControls() {
+  m_distanceBox = new QComboBox;
+  m_distanceBox->setObjectName(QStringLiteral("viewDistance"));
+  for (int distance = 1; distance <= ViewDocument::kMaxViewDistance; distance *= 2)
+    m_distanceBox->addItem(tr("×%1").arg(distance), distance);
+  m_distanceBox->setToolTip(
+      tr("Look at the material as from this many times farther: it repeats that many times "
+         "more, so each texel covers fewer pixels and the viewport samples the mip levels an "
+         "engine samples there, from the chain the Compress panel writes (its Mipmaps and Mip "
+         "filter), original or compressed. The Mip level view shows which. ([ and ])"));
+  connect(m_distanceBox, &QComboBox::activated, this,
+          [this](int index) { m_view->setViewDistance(m_distanceBox->itemData(index).toInt()); });
+  connect(m_view, &ViewDocument::tilePreviewChanged, this, [this] {
+    m_distanceBox->setCurrentIndex(m_distanceBox->findData(m_view->viewDistance()));
+  });
+  addWidget(new QLabel(tr(" Distance ")));
+  addWidget(m_distanceBox);
+  const auto step = [this](int by) {
+    const int index = std::clamp(m_distanceBox->currentIndex() + by, 0, m_distanceBox->count() - 1);
+    m_view->setViewDistance(m_distanceBox->itemData(index).toInt());
+  };
+  m_farther = new QAction(tr("Look From Farther"), this);
+  m_farther->setObjectName(QStringLiteral("fartherAction"));
+  m_farther->setShortcut(QKeySequence(tr("]")));
+  connect(m_farther, &QAction::triggered, this, [step] { step(1); });
+  m_closer = new QAction(tr("Look From Closer"), this);
+  m_closer->setObjectName(QStringLiteral("closerAction"));
+  m_closer->setShortcut(QKeySequence(tr("[")));
+  connect(m_closer, &QAction::triggered, this, [step] { step(-1); });
 }
 
 // The toolbar's mesh box follows the view document: a primitive's entry, or the file's name

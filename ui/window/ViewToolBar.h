@@ -1,8 +1,8 @@
 // ViewToolBar: the main window's "View" toolbar — what the viewport shows (the shaded material
-// or a diagnostic view), the mesh it is shown on, the tile preview, the engine preview (and the
-// engine grid window) and the A|B comparison. The
-// debug view and the mesh are the view document's, and the boxes follow it whoever changed them (a
-// preset, undo); the comparison is the viewport's own.
+// or a diagnostic view), the mesh it is shown on, the tile preview, the view distance, the engine
+// preview (and the engine grid window) and the A|B comparison. The debug view and the mesh are the
+// view document's, and the boxes follow it whoever changed them (a preset, undo); the comparison is
+// the viewport's own.
 #pragma once
 
 #include "ui/Forward.h"
@@ -28,6 +28,9 @@ class ViewToolBar : public QToolBar {
   QAction* tileAction() const { return m_tile; }
   QAction* seamsAction() const { return m_seams; }
   QAction* hexAction() const { return m_hex; }
+  QComboBox* distanceBox() const { return m_distanceBox; }
+  QAction* fartherAction() const { return m_farther; }  // ]: the next distance
+  QAction* closerAction() const { return m_closer; }    // [: the previous one
   QComboBox* engineBox() const { return m_engineBox; }
   QAction* engineGridAction() const { return m_engineGrid; }
   QAction* engineCycleAction() const { return m_engineCycle; }  // E: Relief, then each engine
@@ -39,6 +42,7 @@ class ViewToolBar : public QToolBar {
   void meshRequested(const QString& name);
 
  private:
+  void createDistanceControls();
   void showMeshSource(const QString& source);
 
   ViewDocument* m_view;
@@ -50,6 +54,9 @@ class ViewToolBar : public QToolBar {
   QAction* m_tile;
   QAction* m_seams;
   QAction* m_hex;
+  QComboBox* m_distanceBox = nullptr;
+  QAction* m_farther = nullptr;
+  QAction* m_closer = nullptr;
   QComboBox* m_engineBox;
   QAction* m_engineGrid;
   QAction* m_engineCycle;
