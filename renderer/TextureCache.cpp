@@ -159,15 +159,15 @@ std::unique_ptr<QOpenGLTexture> createMapTexture(const Image& image, MapSlot slo
   uploadLevel(*texture, 0, image, slot);
   if (levels == 1)
     return texture;
-  if (chain.foldNormalSpread && slot == MapSlot::Roughness) {
-    // The folded chain (one channel, all levels at once: a third of the map); a fold that cannot
-    // be made (no normal map, another size) falls through to the plain chain, as the export
-    // refuses it and would not ship it either.
-    core::Result<std::vector<Image>> folded =
+  if ((chain.foldNormalSpread && slot == MapSlot::Roughness) || chain.alphaCutoff > 0.0f) {
+    // A folded roughness chain or one keeping alpha coverage: all levels at once (a third of the
+    // map). A fold that cannot be made (no normal map, another size) falls through to the plain
+    // chain, as the export refuses it and would not ship it either.
+    core::Result<std::vector<Image>> shipped =
         core::shippedMipLevels(image, slot, chain, spreadNormals);
-    if (folded) {
+    if (shipped) {
       for (int i = 1; i < levels; ++i)
-        uploadLevel(*texture, i, folded.value()[std::size_t(i - 1)], slot);
+        uploadLevel(*texture, i, shipped.value()[std::size_t(i - 1)], slot);
       return texture;
     }
   }

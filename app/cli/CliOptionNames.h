@@ -39,6 +39,7 @@ inline const QString kMethod = QStringLiteral("method");
 inline const QString kMetrics = QStringLiteral("metrics");
 inline const QString kMipFilter = QStringLiteral("mip-filter");
 inline const QString kRoughnessFromNormals = QStringLiteral("roughness-from-normals");
+inline const QString kAlphaCoverage = QStringLiteral("alpha-coverage");
 inline const QString kMips = QStringLiteral("mips");
 inline const QString kNormal = QStringLiteral("normal");
 inline const QString kOrm = QStringLiteral("orm");

@@ -86,6 +86,12 @@ CliOptions compressOptions() {
        QStringLiteral("The mip chain's filter: box (area average), or kaiser (a Kaiser-windowed "
                       "sinc, sharper and without the box's aliasing; wraps at the edges)."),
        QStringLiteral("box")},
+      {option::kAlphaCoverage,
+       QStringLiteral("cutoff"),
+       QStringLiteral("A colour map with alpha cut out by an alpha test at this cutoff (0..1): "
+                      "every mip level keeps level 0's share of texels at or above it, so "
+                      "leaves and fences do not thin away far off. Needs --mips."),
+       {}},
       {option::kRoughnessFromNormals,
        QStringLiteral("normal-map"),
        QStringLiteral("The map is a roughness map: widen its mips by this normal map's spread "
@@ -194,6 +200,24 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
                   *zstdLevel,
                   parser.isSet(option::kPerceptual),
                   *mipFilter};
+  if (parser.isSet(option::kAlphaCoverage)) {
+    const std::optional<double> cutoff = numberOption(parser, option::kAlphaCoverage, 0.5);
+    if (!cutoff)
+      return kExitUsage;
+    if (*cutoff <= 0.0 || *cutoff >= 1.0 || !parser.isSet(option::kMips)) {
+      printError(
+          QStringLiteral("--alpha-coverage: a cutoff between 0 and 1 (exclusive), with "
+                         "--mips (it shapes the mip levels)"));
+      return kExitUsage;
+    }
+    if (job.map->channels() < 4) {
+      printError(QStringLiteral("%1: --alpha-coverage needs an alpha channel; the map has %2")
+                     .arg(parser.value(option::kIn))
+                     .arg(job.map->channels()));
+      return kExitUsage;
+    }
+    job.settings.alphaCoverage = float(*cutoff);
+  }
   if (parser.isSet(option::kRoughnessFromNormals)) {
     if (!parser.isSet(option::kMips)) {
       printError(QStringLiteral("--roughness-from-normals widens the mips: it needs --mips"));

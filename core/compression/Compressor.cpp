@@ -197,9 +197,21 @@ Result<std::vector<Image>> shippedMipLevels(const Image& map, MapSlot slot,
     }
     return foldedRoughnessLevels(map, *spreadNormals, chain.filter);
   }
+  // Keeping alpha coverage, each level is filtered from the level above before its scale (the
+  // scales do not compound) and scaled to level 0's coverage.
+  const bool keepCoverage = chain.alphaCutoff > 0.0f && map.channels() >= 4;
+  const double coverage = keepCoverage ? alphaCoverage(map, chain.alphaCutoff) : 0.0;
   std::vector<Image> smaller;
-  for (int i = 1, count = mipLevelCount(map.width(), map.height()); i < count; ++i)
-    smaller.push_back(downsampleForSlot(i == 1 ? map : smaller.back(), slot, chain.filter));
+  Image unscaled;
+  for (int i = 1, count = mipLevelCount(map.width(), map.height()); i < count; ++i) {
+    const Image& above = i == 1 ? map : keepCoverage ? unscaled : smaller.back();
+    Image level = downsampleForSlot(above, slot, chain.filter);
+    if (keepCoverage) {
+      unscaled = level;
+      scaleAlphaToCoverage(level, chain.alphaCutoff, coverage);
+    }
+    smaller.push_back(std::move(level));
+  }
   return smaller;
 }
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 
 namespace relief::core::inline compression {
 namespace {
@@ -233,6 +234,51 @@ Image downsampleForSlot(const Image& image, MapSlot slot, MipFilter filter) {
   return filterDown(
       image, filter, [=](const float* in, float* out) { std::copy(in, in + channels, out); },
       [](float*) {});
+}
+
+double alphaCoverage(const Image& image, float cutoff) {
+  if (image.channels() < 4 || image.pixelCount() == 0)
+    return 0.0;
+  std::size_t covered = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x)
+      covered += image.at(x, y, 3) >= cutoff ? 1 : 0;
+  }
+  return double(covered) / double(image.pixelCount());
+}
+
+void scaleAlphaToCoverage(Image& level, float cutoff, double coverage) {
+  if (level.channels() < 4 || level.pixelCount() == 0)
+    return;
+  std::vector<float> alphas;
+  alphas.reserve(level.pixelCount());
+  for (int y = 0; y < level.height(); ++y) {
+    for (int x = 0; x < level.width(); ++x)
+      alphas.push_back(level.at(x, y, 3));
+  }
+  // The texels to keep at or above the cutoff: the `wanted` largest alphas.
+  const auto wanted = std::size_t(std::lround(coverage * double(alphas.size())));
+  std::sort(alphas.begin(), alphas.end(), std::greater<float>());
+  float scale = 1.0f;
+  if (wanted == 0) {
+    // Nothing covered: bring the largest alpha just under the cutoff (if it reaches it).
+    if (alphas.front() >= cutoff) {
+      scale = std::nextafter(cutoff, 0.0f) / alphas.front();
+      while (alphas.front() * scale >= cutoff)
+        scale = std::nextafter(scale, 0.0f);
+    }
+  } else {
+    const float threshold = alphas[std::min(wanted, alphas.size()) - 1];
+    if (threshold <= 0.0f)
+      return;  // fewer non-zero texels than wanted: no scale reaches the coverage
+    scale = cutoff / threshold;
+    while (threshold * scale < cutoff)  // rounding must not drop the threshold texel
+      scale = std::nextafter(scale, 2.0f * scale);
+  }
+  for (int y = 0; y < level.height(); ++y) {
+    for (int x = 0; x < level.width(); ++x)
+      level.at(x, y, 3) = std::min(1.0f, level.at(x, y, 3) * scale);
+  }
 }
 
 std::vector<Image> buildMipChain(const Image& image, MapSlot slot, MipFilter filter) {

@@ -137,7 +137,8 @@ bool isBcFamily(TextureFormat format) {
 MipChainSpec shippedMipChain(const std::optional<CompressionSettings>& settings) {
   if (!settings)
     return {};
-  return {settings->mipmaps, settings->mipFilter, settings->roughnessFromNormals};
+  return {settings->mipmaps, settings->mipFilter, settings->roughnessFromNormals,
+          settings->alphaCoverage};
 }
 
 }  // namespace relief::core::inline compression

@@ -112,6 +112,9 @@ struct CompressionSettings {
   // A roughness map's mips widened by the material's normal map's spread (RoughnessFold.h:
   // Toksvig), so a bumpy surface far away stays as rough as its bumps make it look.
   bool roughnessFromNormals = false;
+  // A colour map's alpha cutoff (0..1) whose coverage every mip level keeps (MipChain.h:
+  // scaleAlphaToCoverage), for cut-outs drawn with an alpha test; 0: off.
+  float alphaCoverage = 0.0f;
 
   bool operator==(const CompressionSettings&) const = default;
 };

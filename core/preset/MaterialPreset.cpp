@@ -149,6 +149,14 @@ MapCompression readCompression(const QJsonObject& object, const std::string& slo
   // "roughnessFromNormals": a roughness map's mips widened by the normal map's spread.
   compression.roughnessFromNormals =
       object.value(QStringLiteral("roughnessFromNormals")).toBool(false);
+  // "alphaCoverage": the alpha cutoff whose coverage each mip level keeps (absent: off).
+  if (object.contains(QStringLiteral("alphaCoverage"))) {
+    if (const std::optional<double> cutoff =
+            readNumber(object.value(QStringLiteral("alphaCoverage")),
+                       slot + " map: compression alphaCoverage", 0.0, 1.0, problems)) {
+      compression.alphaCoverage = float(*cutoff);
+    }
+  }
   return compression;
 }
 
@@ -456,6 +464,8 @@ QJsonObject compressionJson(const CompressionSettings& compression) {
     choice.insert(QStringLiteral("mipFilter"), qstr(mipFilterName(compression.mipFilter)));
   if (compression.roughnessFromNormals)
     choice.insert(QStringLiteral("roughnessFromNormals"), true);
+  if (compression.alphaCoverage > 0.0f)
+    choice.insert(QStringLiteral("alphaCoverage"), double(compression.alphaCoverage));
   return choice;
 }
 

@@ -809,6 +809,47 @@ TEST(Cli, CompressFoldsTheNormalsSpreadIntoRoughness) {
   EXPECT_FALSE(std::filesystem::exists(folder + "/y.ktx2"));
 }
 
+// compress --alpha-coverage: the cut-out's coverage of the cutoff survives down the chain (level
+// 3, 128x128, within 1% of the texels) where the plain chain thins it; without --mips, outside
+// 0..1 or on a map without alpha it is a usage error.
+TEST(Cli, CompressKeepsAlphaCoverage) {
+  const std::string folder = scratchFolder();
+  core::Image leaves(1024, 1024, 4);
+  for (int y = 0; y < 1024; ++y) {
+    for (int x = 0; x < 1024; ++x) {
+      const double stroke = std::abs(std::sin(x / 9.0 + 3.0 * std::sin(y / 13.0)));
+      for (int c = 0; c < 3; ++c)
+        leaves.at(x, y, c) = 0.3f;
+      leaves.at(x, y, 3) = float(std::max(0.0, 1.0 - 4.0 * stroke));
+    }
+  }
+  ASSERT_TRUE(core::saveImage(leaves, folder + "/leaves.png"));
+  const QString in = q(folder + "/leaves.png");
+  const double coverage = core::alphaCoverage(leaves, 0.5f);
+  const auto levelCoverage = [&](const std::string& path) {
+    core::Result<core::CompressedTexture> texture = core::loadCompressedTexture(path);
+    EXPECT_TRUE(texture.ok()) << texture.error();
+    return core::alphaCoverage(core::decodeLevel(texture.value(), 3).value(), 0.5f);
+  };
+  CliRun kept = runCli({"compress", "--in", in, "--format", "bc7", "--mips", "--alpha-coverage",
+                        "0.5", "--out", q(folder + "/kept.ktx2")});
+  ASSERT_EQ(kept.exitCode, 0) << kept.err;
+  CliRun plain =
+      runCli({"compress", "--in", in, "--format", "bc7", "--mips", "--out", q(folder + "/p.ktx2")});
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_NEAR(levelCoverage(folder + "/kept.ktx2"), coverage, 0.01);
+  EXPECT_LT(levelCoverage(folder + "/p.ktx2"), coverage - 0.02) << "the plain chain thins it";
+  const QString rgb = q(sourcePath("samples/tiles/tiles_color.png"));
+  for (const QStringList& bad : {QStringList{"--in", in, "--alpha-coverage", "0.5"},
+                                 QStringList{"--in", in, "--mips", "--alpha-coverage", "1.5"},
+                                 QStringList{"--in", rgb, "--mips", "--alpha-coverage", "0.5"}}) {
+    CliRun run =
+        runCli(QStringList{"compress", "--format", "bc7", "--out", q(folder + "/x.ktx2")} + bad);
+    EXPECT_EQ(run.exitCode, 2) << bad.join(' ').toStdString();
+    EXPECT_NE(run.err.find("alpha"), std::string::npos) << run.err;
+  }
+}
+
 // generate tileable: a crop of a sample set (which no longer tiles) comes out as tiles under the
 // same names, at the inputs' bit depths, with the seams' numbers; an --out-dir that would write
 // over the inputs, and maps of different sizes, are refused with the files named and nothing

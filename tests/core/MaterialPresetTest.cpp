@@ -65,8 +65,14 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
   preset.material.setParameter(ParamId::ShadowMode, double(ShadowMode::Hard));
   preset.compression[std::size_t(MapSlot::Normal)] =
       CompressionSettings{TextureFormat::Bc5, CompressionQuality::Best, false, 12};
-  preset.compression[std::size_t(MapSlot::Color)] = CompressionSettings{
-      TextureFormat::Bc1, CompressionQuality::Fast, true, 0, true, MipFilter::Kaiser};
+  preset.compression[std::size_t(MapSlot::Color)] = CompressionSettings{TextureFormat::Bc1,
+                                                                        CompressionQuality::Fast,
+                                                                        true,
+                                                                        0,
+                                                                        true,
+                                                                        MipFilter::Kaiser,
+                                                                        false,
+                                                                        0.375f};
   OrbitCamera camera;
   camera.yawDeg = -40.0f;
   camera.target = glm::vec3(0.1f, 0.2f, 0.3f);

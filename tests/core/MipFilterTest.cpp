@@ -106,5 +106,47 @@ TEST(MipFilter, KaiserKeepsNormalsUnitAndColourInRange) {
   EXPECT_EQ(findMipFilter("lanczos"), std::nullopt);
 }
 
+// Alpha coverage (MipChain.h: scaleAlphaToCoverage): thin wavy strokes with a soft profile (a
+// cut-out's alpha) lose coverage of the 0.5 cutoff level by level when averaged; scaled, every
+// level of 256 texels or more keeps level 0's coverage within 1% of it plus one texel's share
+// (the quantile's resolution; texels tied at the threshold go over together), and the colour
+// channels are untouched.
+TEST(MipFilter, AlphaCoverageIsKeptEveryLevel) {
+  Image foliage(256, 256, 4);
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      const double stroke = std::abs(std::sin(2.0 * std::numbers::pi * x / 37.0 +
+                                              3.0 * std::sin(2.0 * std::numbers::pi * y / 53.0)));
+      foliage.at(x, y, 0) = float(x) / 255.0f;
+      foliage.at(x, y, 1) = 0.5f;
+      foliage.at(x, y, 2) = float(y) / 255.0f;
+      foliage.at(x, y, 3) = float(std::max(0.0, 1.0 - 4.0 * stroke));
+    }
+  }
+  const float cutoff = 0.5f;
+  const double coverage = alphaCoverage(foliage, cutoff);
+  ASSERT_GT(coverage, 0.05);
+  const std::vector<Image> plain = buildMipChain(foliage, MapSlot::Color, MipFilter::Box);
+  std::vector<Image> kept = plain;
+  for (std::size_t k = 1; k < kept.size(); ++k)
+    scaleAlphaToCoverage(kept[k], cutoff, coverage);
+  EXPECT_LT(alphaCoverage(plain[3], cutoff), 0.8 * coverage) << "averaging thins the strokes";
+  for (std::size_t k = 1; k < kept.size() && kept[k].pixelCount() >= 256; ++k) {
+    const double texel = 1.0 / double(kept[k].pixelCount());
+    EXPECT_NEAR(alphaCoverage(kept[k], cutoff), coverage, 0.01 * coverage + texel)
+        << "level " << k;
+    for (int y = 0; y < kept[k].height(); ++y) {
+      for (int x = 0; x < kept[k].width(); ++x) {
+        EXPECT_EQ(kept[k].at(x, y, 0), plain[k].at(x, y, 0));
+        EXPECT_LE(kept[k].at(x, y, 3), 1.0f);
+      }
+    }
+  }
+  // Nothing to keep: the level is brought just under the cutoff.
+  Image faint = plain[1];
+  scaleAlphaToCoverage(faint, cutoff, 0.0);
+  EXPECT_EQ(alphaCoverage(faint, cutoff), 0.0);
+}
+
 }  // namespace
 }  // namespace relief::core
