@@ -60,9 +60,16 @@ int main(int argc, char* argv[]) {
     printOut(usage());
     return kExitUsage;
   }
-  // render, and a batch with render jobs, run where GL is linked (RenderHelper.h).
+  // render, compare --rendered and a batch with render jobs run where GL is linked
+  // (RenderHelper.h).
   if (!command->run)
     return runRenderHelper(argc, argv);
+  if (std::strcmp(argv[1], "compare") == 0) {
+    for (int i = 2; i < argc; ++i) {
+      if (std::strcmp(argv[i], "--rendered") == 0)
+        return runRenderHelper(argc, argv);
+    }
+  }
   int exitCode = kExitOk;
   {
     QCoreApplication application(argc, argv);

@@ -363,7 +363,10 @@ int runCompare(const QStringList& arguments) {
   parser.setApplicationDescription(QStringLiteral(
       "Measure how far CANDIDATE is from REFERENCE: PSNR per channel and overall, SSIM, "
       "maximum error; angular error for normal maps; parallax shift for height maps; size "
-      "and rate when CANDIDATE is a DDS or KTX2 file."));
+      "and rate when CANDIDATE is a DDS or KTX2 file. relief-cli compare --rendered PRESET "
+      "[--json] instead renders the preset's material with its maps as they are and as its "
+      "compression choices make them, and compares the pictures (see render "
+      "--compression-error)."));
   parser.addPositionalArgument(QStringLiteral("reference"), QStringLiteral("The original."));
   parser.addPositionalArgument(QStringLiteral("candidate"),
                                QStringLiteral("An image or a .dds/.ktx2 file."));

@@ -3,12 +3,17 @@
 
 #include "CliCommon.h"
 
+#include "core/compression/CompressionJob.h"
 #include "core/exporters/EnginePreview.h"
 #include "renderer/CostTable.h"
 #include "renderer/EngineGrid.h"
 #include "renderer/OffscreenRenderer.h"
+#include "renderer/RenderedError.h"
 
 #include <QJsonArray>
+#include <QStringList>
+
+#include <cmath>
 
 namespace relief::cli {
 
@@ -35,6 +40,74 @@ core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscree
   if (!json)
     printOut(QString::fromStdString(renderer::describeEngineGrid(grid)));
   return std::move(grid.picture);
+}
+
+int printCompressionError(renderer::OffscreenRenderer& offscreen, const core::Material& material,
+                          const std::array<core::MapCompression, core::kMapSlotCount>& compression,
+                          const renderer::FrameSettings& frame, int width, int height, bool json) {
+  core::Material compressed = material;
+  QJsonArray maps;
+  QStringList mapsText;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    const core::MapCompression& choice = compression[std::size_t(slot)];
+    if (!choice || !material.hasMap(slot))
+      continue;
+    core::CompressionJob job;
+    job.map = material.map(slot).image;
+    job.slot = slot;
+    job.settings = *choice;
+    job.measure = false;
+    job.spreadNormals = material.map(core::MapSlot::Normal).image;
+    core::Result<core::CompressionOutcome> outcome = core::runCompressionJob(job);
+    if (!outcome) {
+      printError(QStringLiteral("the %1 map: %2")
+                     .arg(qstr(core::mapSlotLabel(slot)).toLower(),
+                          QString::fromStdString(outcome.error())));
+      return kExitFailure;
+    }
+    core::Result<core::Image> decoded = core::decodeAsMap(*outcome->texture);
+    if (!decoded) {
+      printError(QString::fromStdString(decoded.error()));
+      return kExitFailure;
+    }
+    compressed.setCompressedMap(slot, outcome->texture,
+                                std::make_shared<const core::Image>(std::move(decoded).value()));
+    const QString format = qstr(core::textureFormatInfo(choice->format).name);
+    maps.append(QJsonObject{{QStringLiteral("slot"), qstr(core::mapSlotName(slot))},
+                            {QStringLiteral("format"), format},
+                            {QStringLiteral("mipmaps"), choice->mipmaps}});
+    mapsText << QStringLiteral("%1 %2").arg(qstr(core::mapSlotName(slot)), format);
+  }
+  core::Result<std::vector<renderer::RenderedErrorRow>> rows =
+      renderer::measureRenderedError(offscreen, material, compressed, frame, width, height);
+  if (!rows) {
+    printError(QStringLiteral("render --compression-error: ") +
+               QString::fromStdString(rows.error()));
+    return kExitFailure;
+  }
+  if (!json) {
+    printOut((mapsText.isEmpty() ? QStringLiteral("no map has a compression choice: the "
+                                                  "material renders as it is\n")
+                                 : QStringLiteral("compressed: %1\n").arg(mapsText.join(", "))) +
+             QString::fromStdString(renderer::describeRenderedError(rows.value())));
+    return kExitOk;
+  }
+  QJsonArray views;
+  for (const renderer::RenderedErrorRow& row : rows.value()) {
+    views.append(QJsonObject{
+        {QStringLiteral("view"), QString::fromStdString(row.view)},
+        // JSON has no infinity: identical pictures have a null PSNR.
+        {QStringLiteral("psnr"), std::isinf(row.psnr) ? QJsonValue() : QJsonValue(row.psnr)},
+        {QStringLiteral("flip"), row.flipMean},
+        {QStringLiteral("uvShiftTexels"),
+         QJsonObject{{QStringLiteral("mean"), row.uvShiftMeanTexels},
+                     {QStringLiteral("p95"), row.uvShiftP95Texels}}}});
+  }
+  printJson(QJsonObject{{QStringLiteral("maps"), maps},
+                        {QStringLiteral("width"), width},
+                        {QStringLiteral("height"), height},
+                        {QStringLiteral("views"), views}});
+  return kExitOk;
 }
 
 int printCostTable(renderer::OffscreenRenderer& offscreen, const renderer::FrameSettings& frame,

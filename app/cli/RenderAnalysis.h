@@ -5,9 +5,12 @@
 
 #include "core/base/Result.h"
 #include "core/image/Image.h"
+#include "core/preset/MaterialPreset.h"
 #include "renderer/FrameSettings.h"
 
 #include <QJsonObject>
+
+#include <array>
 
 namespace relief::renderer {
 class OffscreenRenderer;
@@ -20,6 +23,13 @@ namespace relief::cli {
 core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscreen,
                                            const renderer::FrameSettings& frame, int width,
                                            int height, bool json, QJsonObject& report);
+
+// Compresses every map `compression` chooses (with the chain it ships with), renders `material`
+// with the original and the compressed maps from each of renderer/RenderedError.h's views and
+// prints their differences (text, or one JSON object); the exit code.
+int printCompressionError(renderer::OffscreenRenderer& offscreen, const core::Material& material,
+                          const std::array<core::MapCompression, core::kMapSlotCount>& compression,
+                          const renderer::FrameSettings& frame, int width, int height, bool json);
 
 // Measures and prints the cost table (text, or one JSON object); the exit code.
 int printCostTable(renderer::OffscreenRenderer& offscreen, const renderer::FrameSettings& frame,

@@ -147,6 +147,15 @@ CliOptions renderOptions() {
                       "the exact trace at this view and size, the cheapest within --max-error "
                       "marked. With --json, as one object."),
        {}});
+  options.push_back(
+      {option::kCompressionError,
+       {},
+       QStringLiteral("Instead of an image: compress every map the preset has a compression "
+                      "choice for, render the material with the original and the compressed "
+                      "maps close, grazing and 8 times farther, and print the differences (PSNR, "
+                      "FLIP, parallax UV shift in texels). relief-cli compare --rendered PRESET "
+                      "is the same."),
+       {}});
   options.push_back({option::kMaxError, QStringLiteral("texels"),
                      QStringLiteral("The cost table's error bound: the mean UV error the "
                                     "cheapest technique must stay within."),
@@ -187,9 +196,10 @@ CliOptions renderOptions() {
 }
 
 struct RenderRequest {
-  bool engineGrid = false;  // --engine grid
-  bool costTable = false;   // --cost-table
-  double maxError = 0.25;   // --max-error
+  bool engineGrid = false;        // --engine grid
+  bool costTable = false;         // --cost-table
+  bool compressionError = false;  // --compression-error (compare --rendered)
+  double maxError = 0.25;         // --max-error
   core::Material material;
   core::Mesh mesh;
   renderer::FrameSettings frame;
@@ -200,7 +210,8 @@ struct RenderRequest {
   bool json = false;
   bool stats = false;
   core::ViewState presetView;  // the preset's camera, light and mesh, used unless overridden
-  QString presetPath;          // as given, for messages about files the preset names
+  std::array<core::MapCompression, core::kMapSlotCount> compression;  // the preset's choices
+  QString presetPath;  // as given, for messages about files the preset names
 };
 
 bool loadMapOption(const QCommandLineParser& parser, const QString& option, core::MapSlot slot,
@@ -332,6 +343,7 @@ std::optional<int> loadMaterial(const QCommandLineParser& parser, RenderRequest&
       return kExitFailure;
     request.material = std::move(loaded->preset.material);
     request.presetView = loaded->preset.view;
+    request.compression = loaded->preset.compression;
     // Each map sampled through the mip chain its compression choice ships (the viewport's rule).
     for (core::MapSlot slot : core::kAllMapSlots) {
       request.frame.mipChains[std::size_t(slot)] =
@@ -521,6 +533,13 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   request.json = parser.isSet(option::kJson);
   request.stats = parser.isSet(option::kStats);
   request.costTable = parser.isSet(option::kCostTable);
+  request.compressionError = parser.isSet(option::kCompressionError);
+  if (request.compressionError && positional.isEmpty()) {
+    printError(
+        QStringLiteral("--compression-error measures a preset's compression choices: "
+                       "give the preset"));
+    return kExitUsage;
+  }
   const std::optional<double> maxError =
       numberOption(parser, option::kMaxError, core::kErrorDisplayTexels);
   if (!maxError || *maxError < 0.0) {
@@ -529,11 +548,13 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     return kExitUsage;
   }
   request.maxError = *maxError;
-  if (parser.isSet(option::kOut) && request.costTable) {
-    printError(QStringLiteral("--cost-table prints a table and writes no image: drop --out"));
+  if (parser.isSet(option::kOut) && (request.costTable || request.compressionError)) {
+    printError(QStringLiteral("%1 prints a table and writes no image: drop --out")
+                   .arg(request.costTable ? QStringLiteral("--cost-table")
+                                          : QStringLiteral("--compression-error")));
     return kExitUsage;
   }
-  if (!parser.isSet(option::kOut) && !request.costTable) {
+  if (!parser.isSet(option::kOut) && !request.costTable && !request.compressionError) {
     printError(QStringLiteral("render needs --out FILE (see --help)"));
     return kExitUsage;
   }
@@ -585,6 +606,10 @@ int renderRequest(renderer::OffscreenRenderer& offscreen, const RenderRequest& r
   offscreen.setMesh(request.mesh);
   offscreen.setMaterial(request.material);
   QJsonObject report;
+  if (request.compressionError) {
+    return printCompressionError(offscreen, request.material, request.compression, request.frame,
+                                 request.width, request.height, request.json);
+  }
   if (request.costTable) {
     return printCostTable(offscreen, request.frame, request.width, request.height, request.maxError,
                           request.json);

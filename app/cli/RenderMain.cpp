@@ -1,4 +1,5 @@
-// relief-cli-render: the executable `relief-cli render`, and `relief-cli batch` with render jobs,
+// relief-cli-render: the executable `relief-cli render`, `relief-cli compare --rendered` (render
+// --compression-error under the compare command's name) and `relief-cli batch` with render jobs,
 // run (RenderHelper.h), with the same arguments; it links the renderer, Qt GUI and OpenGL, which
 // the other commands never need.
 #include "BatchCommand.h"
@@ -13,11 +14,24 @@
 #include <QSurfaceFormat>
 
 #include <cstring>
+#include <vector>
 
 int main(int argc, char* argv[]) {
   using namespace relief::cli;
   takeQuietFlag(argc, argv);
   relief::core::removeTemporaryFilesOnSignal();
+  if (argc >= 2 && std::strcmp(argv[1], "compare") == 0) {
+    static char render[] = "render";
+    static char compressionError[] = "--compression-error";
+    std::vector<char*> arguments(argv, argv + argc);
+    arguments[1] = render;
+    for (char*& argument : arguments) {
+      if (std::strcmp(argument, "--rendered") == 0)
+        argument = compressionError;
+    }
+    arguments.push_back(nullptr);
+    return runRender(argc, arguments.data());
+  }
   if (argc < 2 || std::strcmp(argv[1], "batch") != 0)
     return runRender(argc, argv);
   if (const std::string problem = relief::app::displayProblem(); !problem.empty()) {

@@ -133,8 +133,7 @@ TEST(MipFilter, AlphaCoverageIsKeptEveryLevel) {
   EXPECT_LT(alphaCoverage(plain[3], cutoff), 0.8 * coverage) << "averaging thins the strokes";
   for (std::size_t k = 1; k < kept.size() && kept[k].pixelCount() >= 256; ++k) {
     const double texel = 1.0 / double(kept[k].pixelCount());
-    EXPECT_NEAR(alphaCoverage(kept[k], cutoff), coverage, 0.01 * coverage + texel)
-        << "level " << k;
+    EXPECT_NEAR(alphaCoverage(kept[k], cutoff), coverage, 0.01 * coverage + texel) << "level " << k;
     for (int y = 0; y < kept[k].height(); ++y) {
       for (int x = 0; x < kept[k].width(); ++x) {
         EXPECT_EQ(kept[k].at(x, y, 0), plain[k].at(x, y, 0));

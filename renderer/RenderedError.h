@@ -1,0 +1,53 @@
+// The error compression makes where the artist looks: the material rendered with its original
+// maps and with their compressed versions (each sampled through the mip chain it ships with),
+// from the same views and light, compared as pictures (PSNR and FLIP of the displayed frame) and,
+// for the relief, by how far the parallax-mapped texture coordinate moves (the float UV view of
+// both, in texels of the height map). Texel metrics judge level 0 of one map; this judges the
+// material, every map and level at once, close, grazing and far away. `relief-cli compare
+// --rendered PRESET` (render --compression-error) prints it.
+#pragma once
+
+#include "core/base/Result.h"
+#include "core/material/Material.h"
+#include "renderer/FrameSettings.h"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace relief::renderer {
+
+class OffscreenRenderer;
+
+// A view the error is measured from: the frame's camera at this pitch, seen from `distance`
+// times farther (TilePreview::distance: mip levels log2(distance) further down).
+struct RenderedErrorView {
+  const char* name;
+  float pitchDeg;
+  int distance;
+};
+// close (35 degrees), grazing (12 degrees), far (35 degrees, 8 times farther).
+std::span<const RenderedErrorView> renderedErrorViews();
+
+struct RenderedErrorRow {
+  std::string view;
+  double psnr = 0.0;               // dB over RGB of the displayed frames; infinity when identical
+  double flipMean = 0.0;           // FLIP (LDR), mean over the frame
+  double uvShiftMeanTexels = 0.0;  // |final UV difference| in height-map texels, covered pixels
+  double uvShiftP95Texels = 0.0;
+};
+
+// Renders `original` and `compressed` (the same material, with compression previews in some
+// slots) from each view at width x height; `frame` gives the camera's yaw and distance, the
+// light, environment, mesh chains and tile preview. The offscreen renderer's mesh must be set;
+// its material is left as `original`.
+core::Result<std::vector<RenderedErrorRow>> measureRenderedError(OffscreenRenderer& offscreen,
+                                                                 const core::Material& original,
+                                                                 const core::Material& compressed,
+                                                                 const FrameSettings& frame,
+                                                                 int width, int height);
+
+// One line a view: "close  PSNR 41.23 dB  FLIP 0.0123  UV shift 0.012 texels mean, 0.05 p95".
+std::string describeRenderedError(const std::vector<RenderedErrorRow>& rows);
+
+}  // namespace relief::renderer
