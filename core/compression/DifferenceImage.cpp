@@ -66,4 +66,34 @@ Image thresholdedDifference(const Image& reference, const Image& candidate, doub
   return out;
 }
 
+Image blockError(const Image& reference, const Image& candidate, int blockWidth, int blockHeight,
+                 std::optional<int> channel) {
+  if (!sameSize(reference, candidate) || blockWidth < 1 || blockHeight < 1)
+    return {};
+  const std::pair<int, int> range = channelRange(reference, candidate, channel);
+  const int first = range.first;
+  const int last = range.second;
+  const int blocksWide = (reference.width() + blockWidth - 1) / blockWidth;
+  const int blocksHigh = (reference.height() + blockHeight - 1) / blockHeight;
+  Image out(blocksWide, blocksHigh, 1);
+  parallelFor(blocksHigh, [&](int by) {
+    for (int bx = 0; bx < blocksWide; ++bx) {
+      double sum = 0.0;
+      long count = 0;
+      for (int y = by * blockHeight; y < std::min((by + 1) * blockHeight, reference.height());
+           ++y) {
+        for (int x = bx * blockWidth; x < std::min((bx + 1) * blockWidth, reference.width()); ++x) {
+          for (int c = first; c < last; ++c) {
+            const double d = double(reference.at(x, y, c)) - double(candidate.at(x, y, c));
+            sum += d * d;
+            ++count;
+          }
+        }
+      }
+      out.at(bx, by, 0) = count ? float(std::sqrt(sum / double(count))) : 0.0f;
+    }
+  });
+  return out;
+}
+
 }  // namespace relief::core::inline compression

@@ -18,4 +18,10 @@ Image amplifiedDifference(const Image& reference, const Image& candidate, double
 Image thresholdedDifference(const Image& reference, const Image& candidate, double threshold,
                             std::optional<int> channel = std::nullopt);
 
+// The root-mean-square difference over each block of blockWidth x blockHeight texels (the
+// format's blocks: which blocks the encoder got wrong), one value a block, over the compared
+// channels; edge blocks cover what is left of the map. One channel, ceil(w / bw) x ceil(h / bh).
+Image blockError(const Image& reference, const Image& candidate, int blockWidth, int blockHeight,
+                 std::optional<int> channel = std::nullopt);
+
 }  // namespace relief::core::inline compression

@@ -438,6 +438,22 @@ TEST(DifferenceImageTest, GainAndThresholdFollowTheDefinitions) {
   EXPECT_EQ(thresholdedDifference(a, b, 8.0 / 255.0, 1).at(3, 1, 0), 1.0f);
 }
 
+// Each block's RMS error, worked out by hand: a 6x5 map in 4x4 blocks (2x2 blocks, the right
+// and bottom ones partial), one texel of one block wrong by 0.4 in one of three channels.
+TEST(Compression, BlockErrorIsEachBlocksRms) {
+  Image a(6, 5, 3), b(6, 5, 3);
+  b.at(5, 4, 1) = 0.4f;  // in block (1, 1): 2x1 texels x 3 channels = 6 values
+  const Image blocks = blockError(a, b, 4, 4);
+  ASSERT_EQ(blocks.width(), 2);
+  ASSERT_EQ(blocks.height(), 2);
+  EXPECT_EQ(blocks.at(0, 0, 0), 0.0f);
+  EXPECT_EQ(blocks.at(1, 0, 0), 0.0f);
+  EXPECT_EQ(blocks.at(0, 1, 0), 0.0f);
+  EXPECT_NEAR(blocks.at(1, 1, 0), std::sqrt(0.16 / 6.0), 1e-6);
+  EXPECT_NEAR(blockError(a, b, 4, 4, 1).at(1, 1, 0), std::sqrt(0.16 / 2.0), 1e-6) << "green alone";
+  EXPECT_EQ(blockError(a, b, 4, 4, 0).at(1, 1, 0), 0.0f) << "red alone";
+}
+
 // --- Quality floors on the samples -----------------------------------------------------------
 // Measured on 256x256 crops of the bricks sample (quality normal) when this test was written;
 // each floor sits a little below the measurement so that a regression in an encoder, decoder

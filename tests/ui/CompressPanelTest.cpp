@@ -246,6 +246,19 @@ TEST_F(CompressPanelTest, TheCompareViewIsTexelExactAndShowsDifferences) {
   dialog->gainSlider()->setValue(1);
   const QImage unamplified = view->picture();
   EXPECT_GT(unamplified.pixelColor(middle).blue(), unamplified.pixelColor(middle).red());
+  // Block error: one colour a block of the format (BC1: 4x4), so the picture is constant inside
+  // every block and differs from the FLIP map.
+  dialog->modeBox()->setCurrentIndex(5);
+  EXPECT_EQ(view->mode(), ui::CompareView::Mode::Blocks);
+  EXPECT_TRUE(dialog->gainSlider()->isEnabled());
+  dialog->gainSlider()->setValue(50);
+  view->setZoom(8.0, view->toWidget(QPointF(20.5, 30.5)));
+  const QImage blocks = view->picture();
+  EXPECT_GT(meanDifference(blocks, flip), 0.0);
+  const QPoint corner = view->toWidget(QPointF(20.1, 36.1)).toPoint();  // both in block (5, 9)
+  const QPoint opposite = view->toWidget(QPointF(23.9, 39.9)).toPoint();
+  ASSERT_TRUE(blocks.rect().contains(corner) && blocks.rect().contains(opposite));
+  EXPECT_EQ(blocks.pixelColor(corner), blocks.pixelColor(opposite));
   dialog->channelBox()->setCurrentIndex(2);  // green alone
   EXPECT_EQ(view->channel(), std::optional<int>(1));
   dialog->close();

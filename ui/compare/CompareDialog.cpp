@@ -1,6 +1,7 @@
 // CompareDialog; see CompareDialog.h.
 #include "ui/compare/CompareDialog.h"
 
+#include "core/compression/TextureFormat.h"
 #include "ui/compare/CompareView.h"
 #include "ui/panels/ParameterSlider.h"
 
@@ -28,7 +29,8 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
   m_mode->addItem(tr("Difference"), int(CompareView::Mode::Difference));
   m_mode->addItem(tr("Thresholded difference"), int(CompareView::Mode::Threshold));
   m_mode->addItem(tr("FLIP error"), int(CompareView::Mode::Flip));
-  m_mode->setToolTip(tr("1-4 switch modes"));
+  m_mode->addItem(tr("Block error"), int(CompareView::Mode::Blocks));
+  m_mode->setToolTip(tr("1-6 switch modes"));
 
   m_channel = new QComboBox(this);
   m_channel->addItem(tr("All channels"), -1);
@@ -80,7 +82,8 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
 
   const auto updateEnabled = [this] {
     const auto mode = CompareView::Mode(m_mode->currentData().toInt());
-    m_gain->setEnabled(mode == CompareView::Mode::Difference || mode == CompareView::Mode::Flip);
+    m_gain->setEnabled(mode == CompareView::Mode::Difference || mode == CompareView::Mode::Flip ||
+                       mode == CompareView::Mode::Blocks);
     m_threshold->setEnabled(mode == CompareView::Mode::Threshold);
   };
   connect(m_mode, &QComboBox::currentIndexChanged, this, [this, updateEnabled] {
@@ -102,7 +105,7 @@ CompareDialog::CompareDialog(QWidget* parent) : QDialog(parent) {
                                      : tr("1:%1").arg(1.0 / zoom, 0, 'g', 3));
   });
   connect(m_view, &CompareView::hoverText, m_hover, &QLabel::setText);
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < m_mode->count(); ++i) {
     auto* shortcut = new QAction(this);
     shortcut->setShortcut(QKeySequence(Qt::Key_1 + i));
     connect(shortcut, &QAction::triggered, this, [this, i] { m_mode->setCurrentIndex(i); });
@@ -127,6 +130,10 @@ void CompareDialog::setComparison(const QString& title, std::shared_ptr<const co
   }
   if (m_channel->currentIndex() > channels)
     m_channel->setCurrentIndex(0);
+  if (report.format) {
+    const core::TextureFormatInfo& info = core::textureFormatInfo(*report.format);
+    m_view->setBlockSize(info.blockWidth, info.blockHeight);
+  }
   m_view->setImages(std::move(original), std::move(compressed));
   m_metrics->setText(QString::fromStdString(core::reportToText(report)).trimmed());
 }

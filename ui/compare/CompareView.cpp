@@ -74,6 +74,12 @@ void CompareView::setChannel(std::optional<int> channel) {
   rebuild();
 }
 
+void CompareView::setBlockSize(int width, int height) {
+  m_blockWidth = std::max(1, width);
+  m_blockHeight = std::max(1, height);
+  rebuild();
+}
+
 void CompareView::setWipeFraction(double fraction) {
   m_wipe = std::clamp(fraction, 0.0, 1.0);
   update();
@@ -94,6 +100,23 @@ void CompareView::rebuild() {
     m_difference = renderer::toDisplayImage(
         core::thresholdedDifference(*m_original, *m_compressed, m_threshold, m_channel),
         std::nullopt);
+  } else if (m_mode == Mode::Blocks) {
+    // Each block's RMS error x gain on the heat ramp, drawn over the block's texels.
+    const core::Image blocks =
+        core::blockError(*m_original, *m_compressed, m_blockWidth, m_blockHeight, m_channel);
+    m_worstBlock = 0.0;
+    for (std::size_t i = 0; i < blocks.valueCount(); ++i)
+      m_worstBlock = std::max(m_worstBlock, double(blocks.data()[i]));
+    m_difference = QImage(m_original->width(), m_original->height(), QImage::Format_RGB888);
+    for (int y = 0; y < m_difference.height(); ++y) {
+      uchar* line = m_difference.scanLine(y);
+      for (int x = 0; x < m_difference.width(); ++x) {
+        const float error = blocks.at(x / m_blockWidth, y / m_blockHeight, 0);
+        const glm::vec3 colour = core::heatmapColor(float(std::min(1.0, error * m_gain)));
+        for (int c = 0; c < 3; ++c)
+          line[3 * x + c] = uchar(std::lround(std::clamp(colour[c], 0.0f, 1.0f) * 255.0f));
+      }
+    }
   } else if (m_mode == Mode::Flip && !m_flipError) {
     m_flipMap = {};
     if (!m_flipTask->isRunning()) {
@@ -241,6 +264,15 @@ void CompareView::paintEvent(QPaintEvent*) {
                 tr("FLIP x %1 (mean %2): navy none, red most")
                     .arg(m_gain, 0, 'f', 0)
                     .arg(m_flipMean, 0, 'f', 4));
+      break;
+    case Mode::Blocks:
+      painter.drawImage(target, m_difference);
+      drawLabel(painter, rect().adjusted(8, 8, -8, -8), Qt::AlignTop | Qt::AlignLeft,
+                tr("RMS error of each %1x%2 block x %3 (worst %4/255): navy none, red most")
+                    .arg(m_blockWidth)
+                    .arg(m_blockHeight)
+                    .arg(m_gain, 0, 'f', 0)
+                    .arg(m_worstBlock * 255.0, 0, 'f', 1));
       break;
     case Mode::Difference:
     case Mode::Threshold:

@@ -1,8 +1,9 @@
 // CompareView: a 2D comparison of a map with its compressed version. Zoom (wheel, about the
 // cursor) and pan (drag) down to single texels, drawn without smoothing above 1:1 so every texel
 // is exact; modes: a wipe with a draggable divider (original left), side by side, the
-// difference amplified x1-x100, the thresholded difference of reference 003's figures, and the
-// FLIP error as a heat map (measured in the background: a large map takes seconds); any
+// difference amplified x1-x100, the thresholded difference of reference 003's figures, the
+// FLIP error as a heat map (measured in the background: a large map takes seconds), and each
+// block's RMS error as a heat map (the format's blocks, to see which ones went wrong); any
 // mode can isolate one channel. Hovering shows the texel's values on both sides.
 #pragma once
 
@@ -23,8 +24,9 @@ class CompareView : public QWidget {
   Q_OBJECT
 
  public:
-  // Flip: the per-pixel FLIP error (core/compression/Flip.h) as a heat map.
-  enum class Mode { Wipe, SideBySide, Difference, Threshold, Flip };
+  // Flip: the per-pixel FLIP error (core/compression/Flip.h) as a heat map. Blocks: each
+  // block's RMS error (core::blockError) as a heat map over the map: which blocks went wrong.
+  enum class Mode { Wipe, SideBySide, Difference, Threshold, Flip, Blocks };
 
   explicit CompareView(QWidget* parent = nullptr);
 
@@ -38,6 +40,8 @@ class CompareView : public QWidget {
   double threshold() const { return m_threshold; }
   void setChannel(std::optional<int> channel);  // empty: all
   std::optional<int> channel() const { return m_channel; }
+  // The compressed format's block size, for the Blocks mode (4x4 unless told).
+  void setBlockSize(int width, int height);
   void setWipeFraction(double fraction);
   double wipeFraction() const { return m_wipe; }
 
@@ -84,6 +88,8 @@ class CompareView : public QWidget {
   std::optional<core::Image> m_flipError;
   QImage m_flipMap;
   double m_flipMean = 0.0;
+  int m_blockWidth = 4, m_blockHeight = 4;
+  double m_worstBlock = 0.0;  // the Blocks mode's largest RMS error, for its caption
   Mode m_mode = Mode::Wipe;
   double m_gain = 10.0;
   double m_threshold = 8.0 / 255.0;
