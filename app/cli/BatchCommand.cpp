@@ -155,7 +155,12 @@ int runBatch(const QStringList& arguments, JobRunner renderJob) {
     printError(QStringLiteral("batch: ") + *problem);
     return kExitUsage;
   }
-  const auto isRender = [](const Job& job) { return job.words.front() == QLatin1String("render"); };
+  // render jobs, and compare --rendered (a render), run in the render session.
+  const auto isRender = [](const Job& job) {
+    return job.words.front() == QLatin1String("render") ||
+           (job.words.front() == QLatin1String("compare") &&
+            job.words.contains(QStringLiteral("--rendered")));
+  };
   if (!renderJob && std::any_of(jobs.begin(), jobs.end(), isRender))
     return kBatchNeedsRenderer;
 

@@ -581,7 +581,11 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
 namespace {
 
 // Parses a render command line into `request`; an exit code when parsing decided the outcome.
-std::optional<int> parseRender(const QStringList& arguments, RenderRequest& request) {
+// `compare --rendered` is `render --compression-error` under the compare command's name.
+std::optional<int> parseRender(QStringList arguments, RenderRequest& request) {
+  if (arguments.size() > 1 && arguments[1] == QStringLiteral("compare"))
+    arguments.replaceInStrings(QRegularExpression(QStringLiteral("^--rendered$")),
+                               QStringLiteral("--compression-error"));
   QCommandLineParser parser;
   parser.setApplicationDescription(
       QStringLiteral("Render a material offscreen, exactly as the editor's viewport shows it. "

@@ -14,24 +14,11 @@
 #include <QSurfaceFormat>
 
 #include <cstring>
-#include <vector>
 
 int main(int argc, char* argv[]) {
   using namespace relief::cli;
   takeQuietFlag(argc, argv);
   relief::core::removeTemporaryFilesOnSignal();
-  if (argc >= 2 && std::strcmp(argv[1], "compare") == 0) {
-    static char render[] = "render";
-    static char compressionError[] = "--compression-error";
-    std::vector<char*> arguments(argv, argv + argc);
-    arguments[1] = render;
-    for (char*& argument : arguments) {
-      if (std::strcmp(argument, "--rendered") == 0)
-        argument = compressionError;
-    }
-    arguments.push_back(nullptr);
-    return runRender(argc, arguments.data());
-  }
   if (argc < 2 || std::strcmp(argv[1], "batch") != 0)
     return runRender(argc, argv);
   if (const std::string problem = relief::app::displayProblem(); !problem.empty()) {

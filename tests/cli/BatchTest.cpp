@@ -1,7 +1,8 @@
 // relief-cli batch (app/cli/BatchCommand.h): many jobs in one process. A bad job fails alone
 // and its message names its file and the batch's line; the good jobs' outputs are whole (they
-// decode); render jobs run in the render helper with one GL context; a batch interrupted in the
-// middle of a save leaves neither a half-written output nor its temporary file.
+// decode); render jobs (and compare --rendered) run in the render helper with one GL context; a
+// batch interrupted in the middle of a save leaves neither a half-written output nor its temporary
+// file.
 #include "cli/CliRunner.h"
 #include "core/image/ImageIO.h"
 #include "support/TestPaths.h"
@@ -98,11 +99,14 @@ TEST(Batch, RenderJobsRunInOneProcessBesideTheOthers) {
   const std::string manifest = writeManifest(
       folder, "render " + preset + " --out " + folder + "/a.png --size 96x64\n" + "info " +
                   sourcePath("samples/bricks/bricks_height.png") + "\n" + "render " + preset +
-                  " --out " + folder + "/b.png --size 48x40 --technique relief\n");
+                  " --out " + folder + "/b.png --size 48x40 --technique relief\n" +
+                  "compare --rendered " + preset + " --size 48x40\n");
   const CliRun run = runCli({"batch", q(manifest)});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.out.find("size: 1024x1024"), std::string::npos) << "the info job's output";
-  EXPECT_NE(run.out.find("batch: 3 jobs, 3 succeeded, 0 failed"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("the material renders as it is"), std::string::npos)
+      << "compare --rendered runs as a render job: " << run.out;
+  EXPECT_NE(run.out.find("batch: 4 jobs, 4 succeeded, 0 failed"), std::string::npos) << run.out;
   for (const auto& [name, width, height] : {std::tuple{"a.png", 96, 64}, {"b.png", 48, 40}}) {
     const core::Result<core::ImageFileInfo> info = core::readImageInfo(folder + "/" + name);
     ASSERT_TRUE(info.ok()) << info.error();
@@ -114,7 +118,10 @@ TEST(Batch, RenderJobsRunInOneProcessBesideTheOthers) {
 // SIGTERM arrives while a save is in progress (the test waits for the save's temporary file to
 // appear): the process ends, the temporary is gone, and every output that exists reads whole.
 TEST(Batch, AnInterruptedBatchLeavesNoHalfWrittenFile) {
-  const std::string folder = scratchFolder();
+  // A folder of its own: the process's scratch folder holds the other tests' outputs when they
+  // run in one process (normal.dds is no image).
+  const std::string folder = scratchFolder() + "/interrupted";
+  fs::create_directories(folder);
   const std::string height = folder + "/height.png";
   QProcess make;
   make.start("oiiotool", {"--pattern", "noise:type=uniform", "4096x4096", "1", "-d", "uint16", "-o",
