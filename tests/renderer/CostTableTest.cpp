@@ -1,7 +1,9 @@
 // The cost table (renderer/CostTable.h): its error column is the error view's number for each
-// row's material, its order by cost is the same from one run to the next where the costs are
-// far apart (ranks, not times, are asserted: the machine is shared), and the cheapest row
-// within a bound is chosen by that bound.
+// row's material, every row is timed, and the cheapest row within a bound is chosen by that
+// bound. Neither times nor ranks between runs are asserted: on a shared machine even a 1.8x gap
+// between two rows' fastest frames once reversed from one run to the next (normal 5.3 ms then
+// 9.6 ms against parallax 9.8 then 7.2). How far a ranking holds is measured by
+// `tools/bench-techniques`, which prints each round's ratios.
 #include "core/mesh/MeshPrimitives.h"
 #include "core/tracing/UvErrorMap.h"
 #include "renderer/CostTable.h"
@@ -64,7 +66,7 @@ class CostTable : public OffscreenTest {
   }
 };
 
-TEST_F(CostTable, ErrorsAreTheErrorViewsAndTheOrderByCostHolds) {
+TEST_F(CostTable, ErrorsAreTheErrorViewsAndTheBoundPicksTheCheapest) {
   const renderer::CostTable first = measure();
   ASSERT_EQ(first.rows.size(), 9u);
   // Each row's error is what the error view reports for that row's material.
@@ -89,19 +91,11 @@ TEST_F(CostTable, ErrorsAreTheErrorViewsAndTheOrderByCostHolds) {
   EXPECT_GT(rowNamed("normal").meanError, rowNamed("pom 8-32").meanError);
   EXPECT_GT(rowNamed("pom 8-32").meanError, rowNamed("pom 32-128").meanError);
 
-  // Where one row costs at least 1.8 times another, the second run ranks them the same way.
-  const renderer::CostTable second = measure();
-  int pairs = 0;
-  for (std::size_t i = 0; i < first.rows.size(); ++i) {
-    for (std::size_t j = 0; j < first.rows.size(); ++j) {
-      if (first.rows[i].times.fastest * 1.8 > first.rows[j].times.fastest)
-        continue;
-      ++pairs;
-      EXPECT_LT(second.rows[i].times.fastest, second.rows[j].times.fastest)
-          << first.rows[i].label << " cost at most 1/1.8 of " << first.rows[j].label;
-    }
+  // Every row was timed: a finite, positive fastest frame no slower than the median one.
+  for (const renderer::CostTableRow& row : first.rows) {
+    EXPECT_TRUE(std::isfinite(row.times.fastest) && row.times.fastest > 0.0) << row.label;
+    EXPECT_LE(row.times.fastest, row.times.median) << row.label;
   }
-  EXPECT_GE(pairs, 2) << "the techniques' costs should spread over more than 1.8x";
 
   // The bound picks: anything goes -> the fastest row; 0 -> only the exact tracers qualify.
   const std::size_t fastest =
