@@ -74,13 +74,12 @@ std::span<const RenderedErrorView> renderedErrorViews() {
   return kViews;
 }
 
-core::Result<std::vector<RenderedErrorRow>> measureRenderedError(OffscreenRenderer& offscreen,
-                                                                 const core::Material& original,
-                                                                 const core::Material& compressed,
-                                                                 const FrameSettings& frame,
-                                                                 int width, int height) {
-  const std::pair<double, double> texels = heightTexels(original);
-  std::vector<RenderedErrorRow> rows;
+core::Result<RenderedViews> renderErrorViews(OffscreenRenderer& offscreen,
+                                             const core::Material& material,
+                                             const FrameSettings& frame, int width, int height) {
+  RenderedViews views;
+  views.heightTexels = heightTexels(material);
+  offscreen.setMaterial(material);
   for (const RenderedErrorView& view : kViews) {
     FrameSettings shaded = frame;
     shaded.view.camera.pitchDeg = view.pitchDeg;
@@ -88,37 +87,61 @@ core::Result<std::vector<RenderedErrorRow>> measureRenderedError(OffscreenRender
     shaded.debugView = core::DebugView::Shading;
     shaded.output = FrameOutput::Display;
     shaded.split.reset();
-    FrameSettings uv = shaded;
-    uv.debugView = core::DebugView::Uv;
-    uv.output = FrameOutput::FloatData;
-    core::Image pictures[2], uvs[2];
-    const core::Material* materials[2] = {&original, &compressed};
-    for (int i = 0; i < 2; ++i) {
-      offscreen.setMaterial(*materials[i]);
-      core::Result<core::Image> picture = offscreen.render(shaded, width, height);
-      if (!picture)
-        return core::makeError(picture.error());
-      pictures[i] = rgbOf(picture.value());
-      if (texels.first > 0.0) {
-        core::Result<core::Image> uvImage = offscreen.render(uv, width, height);
-        if (!uvImage)
-          return core::makeError(uvImage.error());
-        uvs[i] = std::move(uvImage).value();
-      }
+    core::Result<core::Image> picture = offscreen.render(shaded, width, height);
+    if (!picture)
+      return core::makeError(picture.error());
+    views.pictures.push_back(rgbOf(picture.value()));
+    if (views.heightTexels.first > 0.0) {
+      FrameSettings uv = shaded;
+      uv.debugView = core::DebugView::Uv;
+      uv.output = FrameOutput::FloatData;
+      core::Result<core::Image> uvImage = offscreen.render(uv, width, height);
+      if (!uvImage)
+        return core::makeError(uvImage.error());
+      views.uvs.push_back(std::move(uvImage).value());
     }
+  }
+  return views;
+}
+
+std::vector<RenderedErrorRow> compareRenderedViews(const RenderedViews& original,
+                                                   const RenderedViews& compressed) {
+  std::vector<RenderedErrorRow> rows;
+  for (std::size_t v = 0; v < kViews.size(); ++v) {
     RenderedErrorRow row;
-    row.view = view.name;
-    row.psnr = core::measureImageError(pictures[0], pictures[1]).psnr;
-    row.flipMean = core::measureFlip(pictures[0], pictures[1]).mean;
-    if (texels.first > 0.0) {
-      const UvShift shift = uvShift(uvs[0], uvs[1], texels);
+    row.view = kViews[v].name;
+    const core::ImageError error =
+        core::measureImageError(original.pictures[v], compressed.pictures[v]);
+    row.psnr = error.psnr;
+    row.mse = error.mse;
+    row.flipMean = core::measureFlip(original.pictures[v], compressed.pictures[v]).mean;
+    if (original.heightTexels.first > 0.0 && v < original.uvs.size() && v < compressed.uvs.size()) {
+      const UvShift shift = uvShift(original.uvs[v], compressed.uvs[v], original.heightTexels);
       row.uvShiftMeanTexels = shift.mean;
       row.uvShiftP95Texels = shift.p95;
     }
     rows.push_back(std::move(row));
   }
-  offscreen.setMaterial(original);
   return rows;
+}
+
+core::Result<std::vector<RenderedErrorRow>> measureRenderedError(OffscreenRenderer& offscreen,
+                                                                 const core::Material& original,
+                                                                 const core::Material& compressed,
+                                                                 const FrameSettings& frame,
+                                                                 int width, int height) {
+  core::Result<RenderedViews> compressedViews =
+      renderErrorViews(offscreen, compressed, frame, width, height);
+  if (!compressedViews)
+    return core::makeError(compressedViews.error());
+  core::Result<RenderedViews> originalViews =
+      renderErrorViews(offscreen, original, frame, width, height);
+  if (!originalViews)
+    return core::makeError(originalViews.error());
+  RenderedViews& views = compressedViews.value();
+  // The compressed material's UVs are compared in the original's height texels.
+  views.heightTexels = originalViews->heightTexels;
+  return compareRenderedViews(originalViews.value(), views);
 }
 
 std::string describeRenderedError(const std::vector<RenderedErrorRow>& rows) {

@@ -13,6 +13,7 @@
 
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace relief::renderer {
@@ -32,15 +33,31 @@ std::span<const RenderedErrorView> renderedErrorViews();
 struct RenderedErrorRow {
   std::string view;
   double psnr = 0.0;               // dB over RGB of the displayed frames; infinity when identical
+  double mse = 0.0;                // the squared error PSNR comes from (0..1 values)
   double flipMean = 0.0;           // FLIP (LDR), mean over the frame
   double uvShiftMeanTexels = 0.0;  // |final UV difference| in height-map texels, covered pixels
   double uvShiftP95Texels = 0.0;
 };
 
+// A material rendered from each view: the displayed picture (RGB) and, when it has relief, the
+// float UV view; heightTexels is its height map's size (0 without one).
+struct RenderedViews {
+  std::vector<core::Image> pictures;
+  std::vector<core::Image> uvs;
+  std::pair<double, double> heightTexels{0.0, 0.0};
+};
+core::Result<RenderedViews> renderErrorViews(OffscreenRenderer& offscreen,
+                                             const core::Material& material,
+                                             const FrameSettings& frame, int width, int height);
+// One row a view: the error of `compressed` against `original` (both from renderErrorViews with
+// the same frame and size; UV shifts in the original's height texels).
+std::vector<RenderedErrorRow> compareRenderedViews(const RenderedViews& original,
+                                                   const RenderedViews& compressed);
+
 // Renders `original` and `compressed` (the same material, with compression previews in some
 // slots) from each view at width x height; `frame` gives the camera's yaw and distance, the
 // light, environment, mesh chains and tile preview. The offscreen renderer's mesh must be set;
-// its material is left as `original`.
+// its material is left as `original`. The two calls above, one after the other.
 core::Result<std::vector<RenderedErrorRow>> measureRenderedError(OffscreenRenderer& offscreen,
                                                                  const core::Material& original,
                                                                  const core::Material& compressed,

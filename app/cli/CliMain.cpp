@@ -60,15 +60,18 @@ int main(int argc, char* argv[]) {
     printOut(usage());
     return kExitUsage;
   }
-  // render, compare --rendered and a batch with render jobs run where GL is linked
-  // (RenderHelper.h).
+  // render, compare --rendered, compress --preset and a batch with render jobs run where GL is
+  // linked (RenderHelper.h).
   if (!command->run)
     return runRenderHelper(argc, argv);
-  if (std::strcmp(argv[1], "compare") == 0) {
-    for (int i = 2; i < argc; ++i) {
-      if (std::strcmp(argv[i], "--rendered") == 0)
-        return runRenderHelper(argc, argv);
-    }
+  // compare --rendered and compress --preset (choose for me) render the material.
+  const bool compare = std::strcmp(argv[1], "compare") == 0;
+  const bool compress = std::strcmp(argv[1], "compress") == 0;
+  for (int i = 2; i < argc && (compare || compress); ++i) {
+    if ((compare && std::strcmp(argv[i], "--rendered") == 0) ||
+        (compress &&
+         (std::strcmp(argv[i], "--preset") == 0 || std::strncmp(argv[i], "--preset=", 9) == 0)))
+      return runRenderHelper(argc, argv);
   }
   int exitCode = kExitOk;
   {

@@ -68,6 +68,12 @@ inline const QString kTo = QStringLiteral("to");
 inline const QString kTonemap = QStringLiteral("tonemap");
 inline const QString kView = QStringLiteral("view");
 inline const QString kYaw = QStringLiteral("yaw");
+inline const QString kBudget = QStringLiteral("budget");
+inline const QString kTargetFlip = QStringLiteral("target-flip");
+inline const QString kTargetPsnr = QStringLiteral("target-psnr");
+inline const QString kDevice = QStringLiteral("device");
+inline const QString kChooseCompression = QStringLiteral("choose-compression");
+inline const QString kProgressLines = QStringLiteral("progress-lines");
 inline const QString kZstd = QStringLiteral("zstd");
 
 }  // namespace relief::cli::option

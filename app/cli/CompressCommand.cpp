@@ -116,6 +116,46 @@ CliOptions compressOptions() {
   };
   for (CliOption& option : slotOptions())
     options.push_back(std::move(option));
+  // Choose for me: run in the render helper (ChooseCompression.h), listed here for --help.
+  options.push_back({option::kPreset,
+                     QStringLiteral("preset"),
+                     QStringLiteral("Instead of --in/--format/--out: choose every map's format "
+                                    "for a goal (--budget, --target-flip or --target-psnr), "
+                                    "judged on the rendered material, and write the files into "
+                                    "--out-dir (--zstd defaults to 19 here). Needs a display."),
+                     {}});
+  options.push_back({option::kBudget,
+                     QStringLiteral("size"),
+                     QStringLiteral("With --preset: the bytes all maps may take as shipped (KTX2 "
+                                    "after Zstandard): 6MB, 512KiB, 700000."),
+                     {}});
+  options.push_back({option::kTargetFlip,
+                     QStringLiteral("X"),
+                     QStringLiteral("With --preset: the fewest bytes whose rendered FLIP (mean "
+                                    "over close, grazing and far views) is at most X."),
+                     {}});
+  options.push_back({option::kTargetPsnr,
+                     QStringLiteral("dB"),
+                     QStringLiteral("With --preset: the fewest bytes whose rendered PSNR is at "
+                                    "least this."),
+                     {}});
+  options.push_back({option::kDevice, QStringLiteral("desktop|mobile"),
+                     QStringLiteral("With --preset: BC formats, or ETC2/EAC and ASTC."),
+                     QStringLiteral("desktop")});
+  options.push_back({option::kOutDir,
+                     QStringLiteral("folder"),
+                     QStringLiteral("With --preset: where the chosen KTX2 files and choice.json "
+                                    "go."),
+                     {}});
+  options.push_back({option::kSize, QStringLiteral("WxH"),
+                     QStringLiteral("With --preset: the rendered views' size."),
+                     QStringLiteral("640x360")});
+  options.push_back({option::kProgressLines,
+                     {},
+                     QStringLiteral("With --preset: progress as 'progress 0.42' lines on "
+                                    "standard error."),
+                     {}});
+  options.push_back(jsonOption());
   return options;
 }
 
@@ -254,6 +294,14 @@ int runCompress(const QStringList& arguments) {
                               QStringLiteral("relief-cli compress --in MAP --format FORMAT "
                                              "--out MAP.dds|MAP.ktx2 [options]")))
     return *exit;
+  for (const QString& chooserOnly : {option::kBudget, option::kTargetFlip, option::kTargetPsnr,
+                                     option::kDevice, option::kOutDir}) {
+    if (parser.isSet(chooserOnly)) {
+      printError(QStringLiteral("--%1 chooses formats for a preset's maps: give --preset PRESET")
+                     .arg(chooserOnly));
+      return kExitUsage;
+    }
+  }
   if (!missingOptions(parser, {option::kIn, option::kOut, option::kFormat}).isEmpty()) {
     printError(QStringLiteral("compress needs --in MAP, --format FORMAT and --out FILE"));
     return kExitUsage;

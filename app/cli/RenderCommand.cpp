@@ -4,6 +4,7 @@
 #include "app/cli/CliOptionNames.h"
 
 #include "../DisplayCheck.h"
+#include "ChooseCompression.h"
 #include "CliCommon.h"
 #include "RenderAnalysis.h"
 #include "RenderLighting.h"
@@ -192,14 +193,17 @@ CliOptions renderOptions() {
                       "data views such as uv, offset, steps, depth, error; the shading view's "
                       "linear radiance, unclamped). Default: from --out."),
        {}});
+  for (CliOption& choose : chooseCompressionOptions())
+    options.push_back(std::move(choose));
   return options;
 }
 
 struct RenderRequest {
-  bool engineGrid = false;        // --engine grid
-  bool costTable = false;         // --cost-table
-  bool compressionError = false;  // --compression-error (compare --rendered)
-  double maxError = 0.25;         // --max-error
+  bool engineGrid = false;              // --engine grid
+  bool costTable = false;               // --cost-table
+  bool compressionError = false;        // --compression-error (compare --rendered)
+  std::optional<ChooseRequest> choose;  // --choose-compression (compress --preset)
+  double maxError = 0.25;               // --max-error
   core::Material material;
   core::Mesh mesh;
   renderer::FrameSettings frame;
@@ -534,6 +538,18 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   request.stats = parser.isSet(option::kStats);
   request.costTable = parser.isSet(option::kCostTable);
   request.compressionError = parser.isSet(option::kCompressionError);
+  if (parser.isSet(option::kChooseCompression)) {
+    if (positional.isEmpty()) {
+      printError(
+          QStringLiteral("compress --preset PRESET: give the preset whose maps to choose "
+                         "formats for"));
+      return kExitUsage;
+    }
+    request.choose.emplace();
+    if (auto exit = parseChooseRequest(parser, positional.front(), *request.choose))
+      return exit;
+    request.compressionError = true;  // a table, no image: the same checks below
+  }
   if (request.compressionError && positional.isEmpty()) {
     printError(
         QStringLiteral("--compression-error measures a preset's compression choices: "
@@ -549,9 +565,11 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   }
   request.maxError = *maxError;
   if (parser.isSet(option::kOut) && (request.costTable || request.compressionError)) {
-    printError(QStringLiteral("%1 prints a table and writes no image: drop --out")
-                   .arg(request.costTable ? QStringLiteral("--cost-table")
-                                          : QStringLiteral("--compression-error")));
+    printError(request.choose
+                   ? QStringLiteral("compress --preset writes into --out-dir: drop --out")
+                   : QStringLiteral("%1 prints a table and writes no image: drop --out")
+                         .arg(request.costTable ? QStringLiteral("--cost-table")
+                                                : QStringLiteral("--compression-error")));
     return kExitUsage;
   }
   if (!parser.isSet(option::kOut) && !request.costTable && !request.compressionError) {
@@ -573,7 +591,14 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
     return exit;
   if (auto exit = applyOverrides(parser, request))
     return exit;
-  return resolveView(parser, request);
+  if (auto exit = resolveView(parser, request))
+    return exit;
+  // The chooser renders every candidate from three views: a smaller frame unless one is asked.
+  if (request.choose && !parser.isSet(option::kSize)) {
+    request.width = 640;
+    request.height = 360;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -586,6 +611,8 @@ std::optional<int> parseRender(QStringList arguments, RenderRequest& request) {
   if (arguments.size() > 1 && arguments[1] == QStringLiteral("compare"))
     arguments.replaceInStrings(QRegularExpression(QStringLiteral("^--rendered$")),
                                QStringLiteral("--compression-error"));
+  if (arguments.size() > 1 && arguments[1] == QStringLiteral("compress"))
+    arguments = chooseCompressionArguments(std::move(arguments));
   QCommandLineParser parser;
   parser.setApplicationDescription(
       QStringLiteral("Render a material offscreen, exactly as the editor's viewport shows it. "
@@ -610,6 +637,11 @@ int renderRequest(renderer::OffscreenRenderer& offscreen, const RenderRequest& r
   offscreen.setMesh(request.mesh);
   offscreen.setMaterial(request.material);
   QJsonObject report;
+  if (request.choose) {
+    ChooseRequest choose = *request.choose;
+    choose.chooser.presetChoices = request.compression;
+    return runChooseCompression(offscreen, request.material, request.frame, choose, request.json);
+  }
   if (request.compressionError) {
     return printCompressionError(offscreen, request.material, request.compression, request.frame,
                                  request.width, request.height, request.json);
