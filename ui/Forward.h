@@ -4,6 +4,7 @@
 #pragma once
 
 namespace relief::ui::inline compare {
+class ChooseForMeDialog;
 class CompareAllDialog;
 class CompareDialog;
 class CompareView;

@@ -7,10 +7,9 @@
 #include "cli/CliRunner.h"
 #include "core/base/ByteSize.h"
 #include "core/compression/TextureFile.h"
-#include "core/image/ImageIO.h"
+#include "support/CroppedSample.h"
 #include "support/TestPaths.h"
 
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -30,38 +29,8 @@ QString q(const std::string& text) {
 
 constexpr int kCut = 128;
 
-// The preset: the cobblestones' maps cut to kCut x kCut (their top-left corner).
 std::string cutMaterial() {
-  const std::string folder = scratchFolder() + "/choose-material";
-  fs::create_directories(folder);
-  QJsonObject maps;
-  for (const char* slot : {"color", "normal", "height"}) {
-    const std::string name = std::string("cobblestones_") + slot + ".png";
-    core::Result<core::Image> full = core::loadImage(sourcePath("samples/cobblestones/" + name));
-    EXPECT_TRUE(full.ok()) << full.error();
-    core::Image cut(kCut, kCut, full->channels(), full->colorSpace());
-    for (int y = 0; y < kCut; ++y) {
-      for (int x = 0; x < kCut; ++x) {
-        for (int c = 0; c < full->channels(); ++c)
-          cut.at(x, y, c) = full->at(x, y, c);
-      }
-    }
-    EXPECT_TRUE(core::saveImage(cut, folder + "/" + name, core::SampleFormat::UInt16).ok());
-    maps.insert(QString::fromLatin1(slot),
-                QJsonObject{{QStringLiteral("path"), q(name)},
-                            {QStringLiteral("colorSpace"), std::string(slot) == "color"
-                                                               ? QStringLiteral("srgb")
-                                                               : QStringLiteral("linear")}});
-  }
-  QFile sample(q(samplePreset("cobblestones")));
-  EXPECT_TRUE(sample.open(QIODevice::ReadOnly));
-  QJsonObject preset = QJsonDocument::fromJson(sample.readAll()).object();
-  preset.insert(QStringLiteral("maps"), maps);
-  const std::string path = folder + "/cut.relief";
-  QFile out(q(path));
-  EXPECT_TRUE(out.open(QIODevice::WriteOnly));
-  out.write(QJsonDocument(preset).toJson());
-  return path;
+  return croppedSamplePreset("cobblestones", kCut, scratchFolder() + "/choose-material");
 }
 
 CliRun choose(const std::string& preset, const QStringList& goal, const std::string& outDir) {

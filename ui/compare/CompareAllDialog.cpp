@@ -197,8 +197,20 @@ void CompareAllDialog::addRow(const core::CompressionOutcome& outcome) {
   m_table->setSortingEnabled(false);
   const int row = m_table->rowCount();
   m_table->insertRow(row);
-  auto* name = new QTableWidgetItem(toQString(core::textureFormatInfo(format).label));
+  const bool materialChoice = m_materialChoice == format;
+  auto* name = new QTableWidgetItem(
+      materialChoice
+          ? tr("%1  ← Choose for Me").arg(toQString(core::textureFormatInfo(format).label))
+          : toQString(core::textureFormatInfo(format).label));
   name->setData(Qt::UserRole, int(format));
+  if (materialChoice) {
+    QFont font = name->font();
+    font.setBold(true);
+    name->setFont(font);
+    name->setToolTip(
+        tr("Choose for Me picked this format for the map, judged on the whole "
+           "material as rendered"));
+  }
   m_table->setItem(row, FormatColumn, name);
   m_table->setItem(row, BitsColumn,
                    sortableNumber(report.size->bitsPerPixel,

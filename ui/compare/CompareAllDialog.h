@@ -40,6 +40,9 @@ class CompareAllDialog : public QDialog {
   QChartView* chartView() const { return m_chartView; }
   const std::vector<core::CompressionOutcome>& outcomes() const { return m_outcomes; }
   std::optional<core::TextureFormat> selectedFormat() const;
+  // The format Choose for Me picked for this map (ChooseForMeDialog), marked in its row; set
+  // before start().
+  void setMaterialChoice(std::optional<core::TextureFormat> format) { m_materialChoice = format; }
 
  Q_SIGNALS:
   void formatChosen(relief::core::MapSlot slot, relief::core::TextureFormat format);
@@ -63,6 +66,7 @@ class CompareAllDialog : public QDialog {
   core::MapSlot m_slot = core::MapSlot::Color;
   double m_texels = 0.0;  // of the map compared
   std::vector<core::CompressionOutcome> m_outcomes;
+  std::optional<core::TextureFormat> m_materialChoice;
 };
 
 }  // namespace relief::ui::inline compare

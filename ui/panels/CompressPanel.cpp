@@ -3,6 +3,7 @@
 
 #include "core/compression/TextureFile.h"
 #include "ui/QtText.h"
+#include "ui/compare/ChooseForMeDialog.h"
 #include "ui/compare/CompareAllDialog.h"
 #include "ui/compare/CompareDialog.h"
 #include "ui/document/MaterialDocument.h"
@@ -170,6 +171,11 @@ void CompressPanel::createResults() {
   m_compareAllButton = new QPushButton(tr("Compare All Formats…"), this);
   m_compareAllButton->setToolTip(
       tr("Compress the selected map (or the first one) in every format and chart the results"));
+  m_chooseForMeButton = new QPushButton(tr("Choose for Me…"), this);
+  m_chooseForMeButton->setObjectName(QStringLiteral("chooseForMe"));
+  m_chooseForMeButton->setToolTip(
+      tr("Pick every map's format for a size budget or a quality target, judged on the "
+         "rendered material"));
   m_saveButton = new QPushButton(tr("Save As…"), this);
   m_saveButton->setToolTip(tr("Save the selected compressed map as DDS or KTX2"));
 }
@@ -178,6 +184,7 @@ void CompressPanel::layOut(QGridLayout* formats) {
   auto* actions = new QHBoxLayout;
   actions->addWidget(m_compress);
   actions->addWidget(m_cancel);
+  actions->addWidget(m_chooseForMeButton);
   auto* viewRow = new QHBoxLayout;
   viewRow->addWidget(new QLabel(tr("Viewport:"), this));
   viewRow->addWidget(m_view, 1);
@@ -209,6 +216,7 @@ void CompressPanel::connectSignals() {
   connect(m_cancel, &QPushButton::clicked, this, &CompressPanel::cancel);
   connect(m_compareButton, &QPushButton::clicked, this, &CompressPanel::openCompare);
   connect(m_compareAllButton, &QPushButton::clicked, this, &CompressPanel::openCompareAll);
+  connect(m_chooseForMeButton, &QPushButton::clicked, this, &CompressPanel::openChooseForMe);
   connect(m_saveButton, &QPushButton::clicked, this, &CompressPanel::saveSelected);
   connect(m_results, &QTableWidget::cellDoubleClicked, this, &CompressPanel::openCompare);
   connect(m_view, &QComboBox::currentIndexChanged, this, [this] {
@@ -221,12 +229,14 @@ void CompressPanel::connectSignals() {
           });
   connect(m_runner, &CompressionRunner::finished, this, &CompressPanel::showFinished);
   connect(m_runner, &CompressionRunner::cancelled, this, [this] {
+    m_wipeWhenCompressed = false;
     m_compress->setEnabled(true);
     m_cancel->setEnabled(false);
     m_progress->setValue(0);
     m_status->setText(tr("Cancelled; the previous results are unchanged."));
   });
   connect(m_runner, &CompressionRunner::failed, this, [this](const QString& message) {
+    m_wipeWhenCompressed = false;
     m_compress->setEnabled(true);
     m_cancel->setEnabled(false);
     m_progress->setValue(0);
@@ -300,8 +310,9 @@ void CompressPanel::showFinished(const std::vector<core::CompressionOutcome>& ou
     }
   }
   m_status->setText(status);
-  if (m_view->currentIndex() == 0)
-    m_view->setCurrentIndex(2);  // show the wipe straight away
+  if (m_view->currentIndex() == 0 || m_wipeWhenCompressed)
+    m_view->setCurrentIndex(m_view->findData(int(ViewDocument::CompressedView::Wipe)));
+  m_wipeWhenCompressed = false;
   showOutcomes();
   showPreviews();
 }
@@ -504,6 +515,24 @@ CompareAllDialog* CompressPanel::compareAllDialog() {
   return m_compareAllDialog;
 }
 
+ChooseForMeDialog* CompressPanel::chooseForMeDialog() {
+  if (!m_chooseForMeDialog) {
+    m_chooseForMeDialog = new ChooseForMeDialog(m_document, m_viewDocument, this);
+    connect(m_chooseForMeDialog, &ChooseForMeDialog::applied, this, [this] {
+      m_wipeWhenCompressed = true;
+      compress();
+      Q_EMIT statusMessage(tr("Choose for Me's formats applied; compressing for the wipe"));
+    });
+  }
+  return m_chooseForMeDialog;
+}
+
+void CompressPanel::openChooseForMe() {
+  ChooseForMeDialog* dialog = chooseForMeDialog();
+  dialog->show();
+  dialog->raise();
+}
+
 void CompressPanel::openCompare() {
   const std::optional<core::MapSlot> slot = selectedSlot();
   if (!slot || !m_outcomes.count(*slot))
@@ -535,6 +564,10 @@ void CompressPanel::openCompareAll() {
   }
   const Row& row = m_rows[std::size_t(*slot)];
   CompareAllDialog* dialog = compareAllDialog();
+  std::optional<core::TextureFormat> materialChoice;
+  if (m_chooseForMeDialog && m_chooseForMeDialog->chosen().count(*slot))
+    materialChoice = m_chooseForMeDialog->chosen().at(*slot);
+  dialog->setMaterialChoice(materialChoice);
   dialog->start(*slot, m_document->material().map(*slot).image,
                 core::CompressionQuality(row.quality->currentData().toInt()),
                 m_mipmaps->isChecked(), m_zstd->value(),

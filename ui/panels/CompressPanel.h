@@ -48,12 +48,15 @@ class CompressPanel : public QWidget {
   const std::map<core::MapSlot, core::CompressionOutcome>& outcomes() const { return m_outcomes; }
   CompareDialog* compareDialog();
   CompareAllDialog* compareAllDialog();
+  ChooseForMeDialog* chooseForMeDialog();
+  QPushButton* chooseForMeButton() const { return m_chooseForMeButton; }
 
  public Q_SLOTS:
   void compress();
   void cancel();
   void openCompare();
   void openCompareAll();
+  void openChooseForMe();
   void saveSelected();
 
  Q_SIGNALS:
@@ -98,8 +101,11 @@ class CompressPanel : public QWidget {
   QPushButton* m_compareButton;
   QPushButton* m_compareAllButton;
   QPushButton* m_saveButton;
+  QPushButton* m_chooseForMeButton;
   CompareDialog* m_compareDialog = nullptr;
   CompareAllDialog* m_compareAllDialog = nullptr;
+  ChooseForMeDialog* m_chooseForMeDialog = nullptr;
+  bool m_wipeWhenCompressed = false;  // Choose for Me's Apply: show the wipe once compressed
   std::map<core::MapSlot, core::CompressionOutcome> m_outcomes;
   bool m_syncing = false;
 };

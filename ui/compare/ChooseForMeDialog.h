@@ -1,0 +1,91 @@
+// ChooseForMeDialog: "Choose for Me" in the Compress panel. Given a size budget for all the
+// material's maps as shipped (KTX2 after Zstandard) or a rendered quality target (FLIP or PSNR of
+// the lit, parallax-mapped material), it picks every map's format, judged on the rendered
+// material (renderer/CompressionChooser.h). The work runs in `relief-cli compress --preset`
+// as a child process: it renders with a GL context of its own, off the editor's GUI thread,
+// and a crash there cannot take the editor down. The material is handed over as a preset in
+// a temporary folder (maps the editor made are written there too). The table lists every
+// candidate, its bytes and its error alone; Apply writes the choices into the document (one
+// undo step) for the panel to compress and show in the 3D wipe.
+#pragma once
+
+#include "core/compression/TextureFormat.h"
+#include "core/material/MapSlot.h"
+#include "ui/Forward.h"
+
+#include <QDialog>
+#include <QJsonObject>
+#include <QProcess>
+
+#include <map>
+#include <memory>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+class QTemporaryDir;
+
+namespace relief::ui::inline compare {
+
+class ChooseForMeDialog : public QDialog {
+  Q_OBJECT
+
+ public:
+  ChooseForMeDialog(MaterialDocument* document, ViewDocument* view, QWidget* parent = nullptr);
+  ~ChooseForMeDialog() override;
+
+  // The relief-cli run: beside the editor's executable (where both are installed and built).
+  void setCliPath(const QString& path) { m_cliPath = path; }
+
+  QComboBox* goalBox() const { return m_goal; }
+  QDoubleSpinBox* valueBox() const { return m_value; }
+  QComboBox* deviceBox() const { return m_device; }
+  QPushButton* chooseButton() const { return m_choose; }
+  QPushButton* applyButton() const { return m_apply; }
+  QTableWidget* table() const { return m_table; }
+  QLabel* summary() const { return m_summary; }
+  bool running() const { return m_process && m_process->state() != QProcess::NotRunning; }
+  // The last finished run's choice: a format per map; empty when nothing was chosen.
+  const std::map<core::MapSlot, core::TextureFormat>& chosen() const { return m_chosen; }
+
+ public Q_SLOTS:
+  void choose();  // starts a run, or cancels the running one
+  void apply();
+
+ Q_SIGNALS:
+  // The choices are in the document; the panel compresses them and shows the wipe.
+  void applied();
+
+ protected:
+  void reject() override;  // Close also cancels
+
+ private:
+  enum class Goal { Budget, Flip, Psnr };
+  void goalChanged();
+  void finished(int exitCode, QProcess::ExitStatus status);
+  void readProgress();
+  void showReport(const QJsonObject& report);
+  void setRunning(bool running);
+
+  MaterialDocument* m_document;
+  ViewDocument* m_view;
+  QString m_cliPath;
+  QComboBox* m_goal;
+  QDoubleSpinBox* m_value;
+  QComboBox* m_device;
+  QPushButton* m_choose;
+  QPushButton* m_apply;
+  QProgressBar* m_progress;
+  QLabel* m_summary;
+  QTableWidget* m_table;
+  QProcess* m_process = nullptr;
+  std::unique_ptr<QTemporaryDir> m_folder;
+  QByteArray m_errors;   // the run's standard error, less its progress lines
+  QByteArray m_pending;  // the start of a line not yet complete
+  std::map<core::MapSlot, core::TextureFormat> m_chosen;
+};
+
+}  // namespace relief::ui::inline compare
