@@ -5,6 +5,7 @@
 
 #include "CliCommon.h"
 #include "TerminalProgress.h"
+#include "core/compression/BlockRdo.h"
 #include "core/compression/CompressionJob.h"
 #include "core/compression/Flip.h"
 #include "core/compression/MapFile.h"
@@ -104,6 +105,12 @@ CliOptions compressOptions() {
                       "(1 fastest .. 22 smallest; 0 none). Lossless: the GPU gets the same "
                       "blocks, the file and the download are smaller."),
        QStringLiteral("0")},
+      {option::kRdo, QStringLiteral("lambda"),
+       QStringLiteral("BC1, BC3, BC4, BC5, BC7: trade quality for size after Zstandard (or a "
+                      "game's LZ): blocks repeat bytes of their neighbours where that costs "
+                      "less than lambda times the bits it saves. 0 is off (the encoder's blocks "
+                      "bit for bit); 1-10 is mild, 50 and up strong. Use with --zstd."),
+       QStringLiteral("0")},
       {option::kPerceptual,
        {},
        QStringLiteral("BC1-BC3 colour: weigh the error by luminance (Rec. 709) instead of "
@@ -159,8 +166,11 @@ CliOptions compressOptions() {
   return options;
 }
 
-std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser) {
-  if (parser.isSet(option::kRoughnessFromNormals))
+// compress also knows --roughness-from-normals (a roughness map); compare does not, and asking
+// QCommandLineParser about an option it was not given prints a warning.
+std::optional<core::MapSlot> slotOption(const QCommandLineParser& parser,
+                                        bool roughnessOption = false) {
+  if (roughnessOption && parser.isSet(option::kRoughnessFromNormals))
     return core::MapSlot::Roughness;
   if (parser.isSet(option::kNormal))
     return core::MapSlot::Normal;
@@ -224,8 +234,9 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
     return kExitFailure;
   }
   // Without --normal or --height a map is colour, except that a one-channel format holds data.
-  job.slot = slotOption(parser).value_or(
-      core::isSingleChannelFormat(*format) ? core::MapSlot::Height : core::MapSlot::Color);
+  job.slot = slotOption(parser, true)
+                 .value_or(core::isSingleChannelFormat(*format) ? core::MapSlot::Height
+                                                                : core::MapSlot::Color);
   job.map = std::make_shared<const core::Image>(std::move(map).value());
   const std::optional<core::MipFilter> mipFilter =
       core::findMipFilter(parser.value(option::kMipFilter).toStdString());
@@ -240,6 +251,22 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
                   *zstdLevel,
                   parser.isSet(option::kPerceptual),
                   *mipFilter};
+  if (parser.isSet(option::kRdo)) {
+    const std::optional<double> lambda = numberOption(parser, option::kRdo, 0.0);
+    if (!lambda)
+      return kExitUsage;
+    if (*lambda < 0.0 || *lambda > core::kMaxRdoLambda) {
+      printError(QStringLiteral("--rdo: a lambda from 0 (off) to %1").arg(core::kMaxRdoLambda));
+      return kExitUsage;
+    }
+    if (*lambda > 0.0 && !core::formatHasRdo(*format)) {
+      printError(QStringLiteral("--rdo: %1 has no rate-distortion optimisation (BC1, BC3, BC4, "
+                                "BC5 and BC7 do)")
+                     .arg(qstr(core::textureFormatInfo(*format).label)));
+      return kExitUsage;
+    }
+    job.settings.rdoLambda = float(*lambda);
+  }
   if (parser.isSet(option::kAlphaCoverage)) {
     const std::optional<double> cutoff = numberOption(parser, option::kAlphaCoverage, 0.5);
     if (!cutoff)

@@ -4,6 +4,7 @@
 #include "core/base/ParallelFor.h"
 #include "core/compression/AstcCodec.h"
 #include "core/compression/BlockCodecs.h"
+#include "core/compression/BlockRdo.h"
 #include "core/compression/MipChain.h"
 #include "core/compression/RoughnessFold.h"
 
@@ -58,22 +59,26 @@ bool encodeBlocks(const Image& map, MapSlot slot, const CompressionSettings& set
   const bool twoChannelNormal = isTwoChannelNormal(slot, settings.format);
   const bool perceptual = settings.perceptual && slot == MapSlot::Color;
   out.assign(std::size_t(blocksX) * std::size_t(blocksY) * std::size_t(info.bytesPerBlock), 0);
-  return parallelFor(
+  const BlockSource gather = [&](int bx, int by, BlockTexels& texels, int& validMask) {
+    validMask = 0;
+    for (int j = 0; j < 4; ++j) {
+      for (int i = 0; i < 4; ++i) {
+        const int x = bx * 4 + i, y = by * 4 + j;
+        if (x < width && y < height)
+          validMask |= 1 << (j * 4 + i);
+        // Padding repeats the edge, so even a fit that saw these texels stays close.
+        prepareTexel(map.pixel(std::min(x, width - 1), std::min(y, height - 1)), map.channels(),
+                     twoChannelNormal, texels[j * 4 + i]);
+      }
+    }
+  };
+  const bool encoded = parallelFor(
       blocksY,
       [&](int by) {
         BlockTexels texels;
         for (int bx = 0; bx < blocksX; ++bx) {
           int validMask = 0;
-          for (int j = 0; j < 4; ++j) {
-            for (int i = 0; i < 4; ++i) {
-              const int x = bx * 4 + i, y = by * 4 + j;
-              if (x < width && y < height)
-                validMask |= 1 << (j * 4 + i);
-              // Padding repeats the edge, so even a fit that saw these texels stays close.
-              prepareTexel(map.pixel(std::min(x, width - 1), std::min(y, height - 1)),
-                           map.channels(), twoChannelNormal, texels[j * 4 + i]);
-            }
-          }
+          gather(bx, by, texels, validMask);
           std::uint8_t* block =
               out.data() + (std::size_t(by) * std::size_t(blocksX) + std::size_t(bx)) *
                                std::size_t(info.bytesPerBlock);
@@ -85,6 +90,9 @@ bool encodeBlocks(const Image& map, MapSlot slot, const CompressionSettings& set
         }
       },
       control);
+  if (encoded && settings.rdoLambda > 0.0f && !control.cancelled())
+    reduceBlockEntropy(settings.format, settings.rdoLambda, blocksX, blocksY, gather, out);
+  return encoded && !control.cancelled();
 }
 
 // A sub-range [begin, begin + share) of the overall progress.

@@ -115,6 +115,9 @@ struct CompressionSettings {
   // A colour map's alpha cutoff (0..1) whose coverage every mip level keeps (MipChain.h:
   // scaleAlphaToCoverage), for cut-outs drawn with an alpha test; 0: off.
   float alphaCoverage = 0.0f;
+  // Rate-distortion optimisation for LZ (BlockRdo.h): the squared error accepted per bit saved
+  // after Zstandard; 0 (off) writes the encoder's blocks as they are. BC1, BC3, BC4, BC5, BC7.
+  float rdoLambda = 0.0f;
 
   bool operator==(const CompressionSettings&) const = default;
 };

@@ -3,6 +3,7 @@
 
 #include "core/base/AtomicFile.h"
 #include "core/base/InputFile.h"
+#include "core/compression/BlockRdo.h"
 #include "core/compression/MapFile.h"
 #include "core/image/ImageIO.h"
 #include "core/shading/Brdf.h"
@@ -155,6 +156,14 @@ MapCompression readCompression(const QJsonObject& object, const std::string& slo
             readNumber(object.value(QStringLiteral("alphaCoverage")),
                        slot + " map: compression alphaCoverage", 0.0, 1.0, problems)) {
       compression.alphaCoverage = float(*cutoff);
+    }
+  }
+  // "rdo": the rate-distortion lambda for Zstandard (BlockRdo.h; absent: off).
+  if (object.contains(QStringLiteral("rdo"))) {
+    if (const std::optional<double> lambda =
+            readNumber(object.value(QStringLiteral("rdo")), slot + " map: compression rdo", 0.0,
+                       kMaxRdoLambda, problems)) {
+      compression.rdoLambda = float(*lambda);
     }
   }
   return compression;
@@ -466,6 +475,8 @@ QJsonObject compressionJson(const CompressionSettings& compression) {
     choice.insert(QStringLiteral("roughnessFromNormals"), true);
   if (compression.alphaCoverage > 0.0f)
     choice.insert(QStringLiteral("alphaCoverage"), double(compression.alphaCoverage));
+  if (compression.rdoLambda > 0.0f)
+    choice.insert(QStringLiteral("rdo"), double(compression.rdoLambda));
   return choice;
 }
 

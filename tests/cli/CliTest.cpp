@@ -884,6 +884,46 @@ TEST(Cli, CompressFoldsTheNormalsSpreadIntoRoughness) {
 // compress --alpha-coverage: the cut-out's coverage of the cutoff survives down the chain (level
 // 3, 64x64, within 1% of the texels) where the plain chain thins it; without --mips, outside
 // 0..1 or on a map without alpha it is a usage error.
+// --rdo: the file after Zstandard shrinks as lambda rises and decodes to a close picture; 0 is
+// the plain file byte for byte; a negative lambda, one above the limit, or a format without RDO
+// are command-line errors.
+TEST(Cli, CompressRdoTradesQualityForSize) {
+  const std::string folder = scratchFolder();
+  const QString in = q(sourcePath("samples/tiles/tiles_color.png"));
+  const auto compress = [&](const char* lambda) {
+    const std::string out = folder + "/rdo_" + lambda + ".ktx2";
+    CliRun run = runCli({"compress", "--in", in, "--format", "bc1", "--zstd", "19", "--rdo", lambda,
+                         "--out", q(out)});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return out;
+  };
+  const std::string off = compress("0"), mild = compress("4"), strong = compress("64");
+  CliRun plain = runCli({"compress", "--in", in, "--format", "bc1", "--zstd", "19", "--out",
+                         q(folder + "/plain.ktx2")});
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_EQ(readBytes(off), readBytes(folder + "/plain.ktx2"));
+  EXPECT_LT(std::filesystem::file_size(mild), std::filesystem::file_size(off));
+  EXPECT_LT(std::filesystem::file_size(strong), std::filesystem::file_size(mild));
+  const auto psnr = [&](const std::string& file) {
+    CliRun run = runCli({"compare", in, q(file), "--json"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return QJsonDocument::fromJson(QByteArray::fromStdString(run.out))
+        .object()
+        .value(QStringLiteral("psnr"))
+        .toDouble();
+  };
+  EXPECT_GT(psnr(mild), psnr(off) - 0.5);
+  EXPECT_LT(psnr(strong), psnr(off));
+  for (const QStringList& bad : {QStringList{"--format", "bc1", "--rdo", "-1"},
+                                 QStringList{"--format", "bc1", "--rdo", "5000"},
+                                 QStringList{"--format", "etc2", "--rdo", "4"}}) {
+    CliRun run =
+        runCli(QStringList{"compress", "--in", in, "--out", q(folder + "/bad.ktx2")} << bad);
+    EXPECT_EQ(run.exitCode, 2) << bad.join(' ').toStdString();
+    EXPECT_NE(run.err.find("--rdo"), std::string::npos) << run.err;
+  }
+}
+
 TEST(Cli, CompressKeepsAlphaCoverage) {
   const std::string folder = scratchFolder();
   core::Image leaves(512, 512, 4);

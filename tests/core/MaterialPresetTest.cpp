@@ -72,7 +72,8 @@ TEST(MaterialPreset, SaveLoadSaveIsExactAndKeepsUnknownKeys) {
                                                                         true,
                                                                         MipFilter::Kaiser,
                                                                         false,
-                                                                        0.375f};
+                                                                        0.375f,
+                                                                        6.5f};
   OrbitCamera camera;
   camera.yawDeg = -40.0f;
   camera.target = glm::vec3(0.1f, 0.2f, 0.3f);

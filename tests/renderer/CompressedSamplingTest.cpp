@@ -27,6 +27,7 @@
 #include <QOpenGLVertexArrayObject>
 
 #include <random>
+#include <tuple>
 
 namespace relief::test {
 namespace {
@@ -166,6 +167,39 @@ TEST_F(CompressedSampling, RandomBlocksDecodeAsTheGpuSamplesThem) {
                 format == TextureFormat::Bc5 ? kBc5Tolerance : kTolerance)
           << core::textureFormatInfo(format).name << " " << width << "x" << height;
     }
+  }
+}
+
+// Blocks rewritten by rate-distortion optimisation (BlockRdo.h: neighbours' bytes spliced in)
+// are blocks of their format like any other: llvmpipe samples them as core decodes them. A
+// strong lambda, so that most blocks are rewritten.
+TEST_F(CompressedSampling, RdoBlocksDecodeAsTheGpuSamplesThem) {
+  core::Result<core::Image> photo =
+      core::loadImage(sourcePath("samples/cobblestones/cobblestones_color.png"));
+  ASSERT_TRUE(photo.ok()) << photo.error();
+  core::Image crop(64, 64, 3);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      for (int c = 0; c < 3; ++c)
+        crop.at(x, y, c) = photo->at(x + 200, y + 300, c);
+    }
+  }
+  const std::tuple<TextureFormat, core::MapSlot, int> cases[] = {
+      {TextureFormat::Bc1, core::MapSlot::Color, 3},
+      {TextureFormat::Bc3, core::MapSlot::Color, 4},
+      {TextureFormat::Bc4, core::MapSlot::Height, 1},
+      {TextureFormat::Bc5, core::MapSlot::Normal, 2},
+      {TextureFormat::Bc7, core::MapSlot::Color, 4}};
+  for (const auto& [format, slot, channels] : cases) {
+    core::CompressionSettings settings;
+    settings.format = format;
+    settings.rdoLambda = 64.0f;
+    core::Result<core::CompressedTexture> texture = core::compressMap(crop, slot, settings);
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    texture->srgb = false;  // the same blocks, sampled without the sRGB decode
+    EXPECT_LE(worstDifference(texture.value(), 0, channels),
+              format == TextureFormat::Bc5 ? kBc5Tolerance : kTolerance)
+        << core::textureFormatInfo(format).name;
   }
 }
 
