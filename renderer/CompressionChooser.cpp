@@ -1,6 +1,7 @@
 // CompressionChooser; see CompressionChooser.h.
 #include "renderer/CompressionChooser.h"
 
+#include "core/compression/BlockRdo.h"
 #include "core/compression/CompressionJob.h"
 #include "core/compression/TextureFile.h"
 #include "renderer/OffscreenRenderer.h"
@@ -80,10 +81,16 @@ core::Result<ChooserResult> chooseCompression(OffscreenRenderer& offscreen,
     entry.slot = slot;
     for (core::TextureFormat format :
          core::chooserFormats(slot, map->channels(), request.platform)) {
-      ChooserCandidate candidate;
-      candidate.option.format = format;
-      candidate.settings = candidateSettings(request, slot, format);
-      entry.candidates.push_back(std::move(candidate));
+      for (float lambda : core::chooserRdoLambdas(request.platform)) {
+        if (lambda > 0.0f && !core::formatHasRdo(format))
+          continue;
+        ChooserCandidate candidate;
+        candidate.option.format = format;
+        candidate.option.rdoLambda = lambda;
+        candidate.settings = candidateSettings(request, slot, format);
+        candidate.settings.rdoLambda = lambda;
+        entry.candidates.push_back(std::move(candidate));
+      }
     }
     // The original is drawn with the chain the candidates ship with, so that both differ by
     // the compression alone.

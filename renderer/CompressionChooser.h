@@ -40,7 +40,7 @@ struct ChooserRequest {
 };
 
 struct ChooserCandidate {
-  core::ChooserOption option;  // format, bytes, error alone
+  core::ChooserOption option;  // format, RDO trade, bytes, error alone
   core::CompressionSettings settings;
   std::shared_ptr<const core::CompressedTexture> texture;
   std::vector<std::uint8_t> file;      // the KTX2 file, supercompressed

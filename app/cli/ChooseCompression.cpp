@@ -24,6 +24,14 @@ QString formatName(core::TextureFormat format) {
   return qstr(core::textureFormatInfo(format).name);
 }
 
+// "bc7", or "bc7 rdo 16" for a candidate with an RDO trade.
+QString optionName(const core::ChooserOption& option) {
+  return option.rdoLambda > 0.0f ? QStringLiteral("%1 rdo %2")
+                                       .arg(formatName(option.format))
+                                       .arg(double(option.rdoLambda))
+                                 : formatName(option.format);
+}
+
 QString describeGoal(const core::ChooserGoal& goal) {
   switch (goal.kind) {
     case core::ChooserGoalKind::Budget:
@@ -52,7 +60,7 @@ QString describePick(const renderer::ChooserResult& result, const core::ChooserP
   for (std::size_t m = 0; m < result.maps.size(); ++m) {
     parts << QStringLiteral("%1 %2").arg(
         qstr(core::mapSlotName(result.maps[m].slot)),
-        formatName(result.maps[m].candidates[pick.options[m]].option.format));
+        optionName(result.maps[m].candidates[pick.options[m]].option));
   }
   return parts.join(QStringLiteral(", "));
 }
@@ -87,19 +95,19 @@ QString describeWhy(const renderer::ChooserResult& result, const core::ChooserGo
         other = &option;
     }
     const double bytes = double(other->bytes) - double(mine.bytes);
-    why += QStringLiteral("\n  %1: %2 instead of %3 %4 %5 and %6 FLIP by %7")
-               .arg(qstr(core::mapSlotName(result.maps[m].slot)), formatName(mine.format),
-                    formatName(other->format),
-                    bytes > 0 ? QStringLiteral("saves") : QStringLiteral("costs"),
-                    qstr(core::describeByteSize(std::uint64_t(std::abs(bytes)))),
-                    other->flip > mine.flip ? QStringLiteral("lowers") : QStringLiteral("raises"))
-               .arg(std::abs(other->flip - mine.flip), 0, 'f', 4);
+    why +=
+        QStringLiteral("\n  %1: %2 instead of %3 %4 %5 and %6 FLIP by %7")
+            .arg(qstr(core::mapSlotName(result.maps[m].slot)), optionName(mine), optionName(*other),
+                 bytes > 0 ? QStringLiteral("saves") : QStringLiteral("costs"),
+                 qstr(core::describeByteSize(std::uint64_t(std::abs(bytes)))),
+                 other->flip > mine.flip ? QStringLiteral("lowers") : QStringLiteral("raises"))
+            .arg(std::abs(other->flip - mine.flip), 0, 'f', 4);
   }
   return why;
 }
 
 QString table(const renderer::ChooserResult& result) {
-  QString text = QStringLiteral("map        format    as shipped   FLIP alone   PSNR alone\n");
+  QString text = QStringLiteral("map        format         as shipped   FLIP alone   PSNR alone\n");
   const std::vector<const renderer::ChooserCandidate*> chosen = result.chosen();
   for (std::size_t m = 0; m < result.maps.size(); ++m) {
     for (const renderer::ChooserCandidate& candidate : result.maps[m].candidates) {
@@ -110,7 +118,7 @@ QString table(const renderer::ChooserResult& result) {
                            : QString(),
                        -9)
                   .arg(picked ? QStringLiteral("*") : QStringLiteral(" "))
-                  .arg(formatName(candidate.option.format), -9)
+                  .arg(optionName(candidate.option), -14)
                   .arg(qstr(core::describeByteSize(candidate.option.bytes)), 11)
                   .arg(candidate.option.flip, 10, 'f', 4)
                   .arg(psnrText(core::psnrFromMse(candidate.option.mse)), 10)
@@ -133,6 +141,7 @@ QJsonObject report(const renderer::ChooserResult& result, const ChooseRequest& r
     for (const renderer::ChooserCandidate& candidate : result.maps[m].candidates) {
       candidates.append(
           QJsonObject{{QStringLiteral("format"), formatName(candidate.option.format)},
+                      {QStringLiteral("rdo"), double(candidate.option.rdoLambda)},
                       {QStringLiteral("bytes"), double(candidate.option.bytes)},
                       {QStringLiteral("flip"), candidate.option.flip},
                       {QStringLiteral("psnr"), psnrJson(core::psnrFromMse(candidate.option.mse))},
@@ -142,6 +151,7 @@ QJsonObject report(const renderer::ChooserResult& result, const ChooseRequest& r
                       {QStringLiteral("candidates"), candidates}};
     if (chosen[m]) {
       entry.insert(QStringLiteral("format"), formatName(chosen[m]->option.format));
+      entry.insert(QStringLiteral("rdo"), double(chosen[m]->option.rdoLambda));
       entry.insert(QStringLiteral("file"), files.value(int(m)));
     }
     maps.append(entry);

@@ -56,6 +56,12 @@ std::vector<TextureFormat> chooserFormats(MapSlot slot, int channels, ChooserPla
   return {};  // not reached: every kind is handled above
 }
 
+std::vector<float> chooserRdoLambdas(ChooserPlatform platform) {
+  if (platform == ChooserPlatform::Desktop)
+    return {0.0f, 16.0f};
+  return {0.0f};
+}
+
 double psnrFromMse(double mse) {
   return mse > 0.0 ? -10.0 * std::log10(mse) : std::numeric_limits<double>::infinity();
 }

@@ -30,9 +30,15 @@ std::optional<ChooserPlatform> findChooserPlatform(std::string_view name);
 // normals, EAC R11 for single values, and ASTC 8x8, 6x6 and 4x4 for every kind.
 std::vector<TextureFormat> chooserFormats(MapSlot slot, int channels, ChooserPlatform platform);
 
+// The RDO trades (BlockRdo.h) tried for each format that has RDO, 0 (off) first: desktop 0 and
+// 16 (a quarter to a half smaller after Zstandard for a fraction of a dB on photographs,
+// docs/compression.md); mobile formats have none.
+std::vector<float> chooserRdoLambdas(ChooserPlatform platform);
+
 // One candidate, measured: its bytes as shipped and the rendered error it alone makes.
 struct ChooserOption {
   TextureFormat format = TextureFormat::Bc1;
+  float rdoLambda = 0.0f;
   std::uint64_t bytes = 0;
   double flip = 0.0;  // mean FLIP of the rendered material over the measured views
   double mse = 0.0;   // mean squared error of the rendered pictures (0..1 values) over the views

@@ -17,10 +17,12 @@ using enum TextureFormat;
 // 0.005, BC7 3500 / 0.008. Height: BC4 2000 / 0.004.
 std::vector<ChooserMap> measuredMaps() {
   return {
-      {MapSlot::Color, {{Bc1, 1000, 0.03, 1e-3}, {Bc7, 3000, 0.01, 1e-4}}},
+      {MapSlot::Color, {{Bc1, 0.0f, 1000, 0.03, 1e-3}, {Bc7, 0.0f, 3000, 0.01, 1e-4}}},
       {MapSlot::Normal,
-       {{Bc1, 1000, 0.02, 5e-4}, {Bc5, 4000, 0.005, 2e-5}, {Bc7, 3500, 0.008, 4e-5}}},
-      {MapSlot::Height, {{Bc4, 2000, 0.004, 1e-5}}},
+       {{Bc1, 0.0f, 1000, 0.02, 5e-4},
+        {Bc5, 0.0f, 4000, 0.005, 2e-5},
+        {Bc7, 0.0f, 3500, 0.008, 4e-5}}},
+      {MapSlot::Height, {{Bc4, 0.0f, 2000, 0.004, 1e-5}}},
   };
 }
 

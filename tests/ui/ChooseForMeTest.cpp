@@ -3,7 +3,9 @@
 // table lists every candidate with one chosen per map, Apply writes exactly the formats the
 // CLI's report chose into the document as one undo step and compresses them into the 3D wipe,
 // Compare All Formats marks the chosen format's row, and a budget below what the maps can
-// ship at says so in the dialog without changing the material.
+// ship at says so in the dialog without changing the material. And the panel's RDO slider: one
+// trade written into every map whose format has RDO as one undo step, Zstandard turned on, and
+// the maps compressed again, smaller on disk.
 #include "support/CroppedSample.h"
 #include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
@@ -18,6 +20,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSlider>
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
@@ -65,25 +68,29 @@ TEST_F(ChooseForMeTest, TheChoiceReachesTheDocumentAndTheWipe) {
   ASSERT_FALSE(dialog()->chosen().empty()) << dialog()->summary()->text().toStdString();
   EXPECT_TRUE(dialog()->summary()->text().contains(QStringLiteral("Chosen")))
       << dialog()->summary()->text().toStdString();
-  // Desktop candidates: colour BC1 | BC7, normal BC1 | BC5 | BC7, height BC4.
-  EXPECT_EQ(dialog()->table()->rowCount(), 6);
+  // Desktop candidates: colour BC1 | BC7, normal BC1 | BC5 | BC7, height BC4, each without
+  // RDO and with RDO 16.
+  EXPECT_EQ(dialog()->table()->rowCount(), 12);
   EXPECT_EQ(dialog()->chosen().size(), 3u);
   ASSERT_TRUE(dialog()->applyButton()->isEnabled());
 
   const int steps = document()->undoStack()->count();
   QTest::mouseClick(dialog()->applyButton(), Qt::LeftButton);
   EXPECT_EQ(document()->undoStack()->count(), steps + 1) << "one undo step";
-  for (const auto& [slot, format] : dialog()->chosen()) {
+  for (const auto& [slot, choice] : dialog()->chosen()) {
     ASSERT_TRUE(document()->compression(slot).has_value());
-    EXPECT_EQ(document()->compression(slot)->format, format);
+    EXPECT_EQ(document()->compression(slot)->format, choice.format);
+    EXPECT_EQ(document()->compression(slot)->rdoLambda, choice.rdoLambda);
     EXPECT_TRUE(document()->compression(slot)->mipmaps);
   }
   // The panel compresses them and shows the wipe.
   for (int waited = 0; panel()->outcomes().size() < 3 && waited < 120000; waited += 50)
     QTest::qWait(50);
   ASSERT_EQ(panel()->outcomes().size(), 3u);
-  for (const auto& [slot, format] : dialog()->chosen())
-    EXPECT_EQ(panel()->outcomes().at(slot).job.settings.format, format);
+  for (const auto& [slot, choice] : dialog()->chosen()) {
+    EXPECT_EQ(panel()->outcomes().at(slot).job.settings.format, choice.format);
+    EXPECT_EQ(panel()->outcomes().at(slot).job.settings.rdoLambda, choice.rdoLambda);
+  }
   EXPECT_EQ(viewDocument()->compressedView(), ui::ViewDocument::CompressedView::Wipe);
 
   // Compare All Formats marks the material's choice in the colour map's table.
@@ -93,14 +100,17 @@ TEST_F(ChooseForMeTest, TheChoiceReachesTheDocumentAndTheWipe) {
   for (int waited = 0; all->runner()->isRunning() && waited < 120000; waited += 50)
     QTest::qWait(50);
   int marked = 0;
-  for (int row = 0; row < all->table()->rowCount(); ++row)
+  QStringList rows;
+  for (int row = 0; row < all->table()->rowCount(); ++row) {
+    rows << all->table()->item(row, 0)->text();
     marked += all->table()->item(row, 0)->text().contains(QStringLiteral("Choose for Me")) ? 1 : 0;
-  EXPECT_EQ(marked, 1);
+  }
+  EXPECT_EQ(marked, 1) << rows.join(QStringLiteral(" | ")).toStdString();
   all->close();
 
   // Undo puts the earlier choices back in one step.
   document()->undoStack()->undo();
-  for (const auto& [slot, format] : dialog()->chosen())
+  for (const auto& [slot, choice] : dialog()->chosen())
     EXPECT_FALSE(document()->compression(slot).has_value());
 }
 
@@ -115,6 +125,39 @@ TEST_F(ChooseForMeTest, ABudgetTooSmallIsSaidAndChangesNothing) {
       << dialog()->summary()->text().toStdString();
   for (MapSlot slot : core::kAllMapSlots)
     EXPECT_FALSE(document()->compression(slot).has_value());
+}
+
+TEST_F(ChooseForMeTest, TheRdoSliderShrinksWhatShips) {
+  // BC1 colour, EAC R11 height (no RDO), compressed once without a trade.
+  for (const auto& [slot, format] : {std::pair{MapSlot::Color, core::TextureFormat::Bc1},
+                                     std::pair{MapSlot::Height, core::TextureFormat::EacR11}}) {
+    QComboBox* box = panel()->formatBox(slot);
+    box->setCurrentIndex(box->findData(int(format)));
+  }
+  panel()->compress();
+  for (int waited = 0; panel()->outcomes().size() < 2 && waited < 60000; waited += 50)
+    QTest::qWait(50);
+  ASSERT_EQ(panel()->outcomes().size(), 2u);
+  const std::uint64_t before = panel()->outcomes().at(MapSlot::Color).report.size->ktx2Bytes;
+
+  const int steps = document()->undoStack()->count();
+  QSlider* slider = panel()->rdoSlider();
+  slider->setValue(ui::CompressPanel::rdoStep(16.0));  // as a key press or a click sets it
+  EXPECT_EQ(document()->undoStack()->count(), steps + 1) << "one undo step";
+  EXPECT_EQ(document()->compression(MapSlot::Color)->rdoLambda, 16.0f);
+  EXPECT_EQ(document()->compression(MapSlot::Height)->rdoLambda, 0.0f) << "EAC has no RDO";
+  // The panel compresses again (Zstandard on, since RDO pays after it): smaller on disk.
+  for (int waited = 0;
+       waited < 60000 && panel()->outcomes().at(MapSlot::Color).job.settings.rdoLambda != 16.0f;
+       waited += 50)
+    QTest::qWait(50);
+  const core::CompressionOutcome& traded = panel()->outcomes().at(MapSlot::Color);
+  ASSERT_EQ(traded.job.settings.rdoLambda, 16.0f);
+  EXPECT_GT(traded.report.size->zstdLevel, 0);
+  EXPECT_LT(traded.report.size->ktx2Bytes, before);
+  document()->undoStack()->undo();
+  EXPECT_EQ(document()->compression(MapSlot::Color)->rdoLambda, 0.0f);
+  EXPECT_EQ(slider->value(), 0) << "the slider follows the document";
 }
 
 }  // namespace

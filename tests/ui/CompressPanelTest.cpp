@@ -3,6 +3,7 @@
 // on this driver, as the status bar says) in a wipe against the original, Cancel leaves the
 // material and the earlier results as they were, the 2D compare view is texel-exact when
 // zoomed, and "compare all formats" fills its table and chart and hands a format back.
+#include "core/compression/BlockRdo.h"
 #include "support/MainWindowFixture.h"
 #include "support/TestPaths.h"
 #include "ui/compare/CompareAllDialog.h"
@@ -292,9 +293,25 @@ TEST_F(CompressPanelTest, CompareAllFormatsFillsTheTableAndChartAndHandsAFormatB
   dialog->start(MapSlot::Height, height, core::CompressionQuality::Fast, true, 3, 0.03);
   dialog->show();
   ASSERT_TRUE(finished.wait(240000));
-  const std::size_t formats = core::formatsForSlot(MapSlot::Height).size();
+  // Every format, and under Zstandard each format with RDO at two trades (lambda 8 and 32).
+  std::size_t formats = 0;
+  for (core::TextureFormat format : core::formatsForSlot(MapSlot::Height))
+    formats += core::formatHasRdo(format) ? 3 : 1;
   EXPECT_EQ(dialog->table()->rowCount(), int(formats));
   EXPECT_EQ(dialog->chartView()->chart()->series().size(), qsizetype(formats));
+  // A trade makes the file on disk smaller than its format's plain row, never larger.
+  for (const core::CompressionOutcome& traded : dialog->outcomes()) {
+    if (traded.job.settings.rdoLambda == 0.0f)
+      continue;
+    for (const core::CompressionOutcome& plain : dialog->outcomes()) {
+      if (plain.job.settings.format == traded.job.settings.format &&
+          plain.job.settings.rdoLambda == 0.0f) {
+        EXPECT_LT(traded.report.size->ktx2Bytes, plain.report.size->ktx2Bytes)
+            << core::textureFormatInfo(plain.job.settings.format).name << " RDO "
+            << traded.job.settings.rdoLambda;
+      }
+    }
+  }
   // Every row carries a finite quality and a rate matching the format's.
   for (const core::CompressionOutcome& outcome : dialog->outcomes()) {
     EXPECT_DOUBLE_EQ(outcome.report.size->bitsPerPixel,

@@ -259,9 +259,11 @@ void ChooseForMeDialog::showReport(const QJsonObject& report) {
       m_table->insertRow(row);
       const bool picked = candidate[QStringLiteral("chosen")].toBool();
       const QString format = candidate[QStringLiteral("format")].toString();
+      const double rdo = candidate[QStringLiteral("rdo")].toDouble();
+      const QString name = rdo > 0.0 ? tr("%1 · RDO %2").arg(format).arg(rdo) : format;
       const QStringList cells = {
           first && slot ? toQString(core::mapSlotLabel(*slot)) : QString(),
-          picked ? tr("%1  ✓ chosen").arg(format) : format,
+          picked ? tr("%1  ✓ chosen").arg(name) : name,
           bytesText(candidate[QStringLiteral("bytes")]),
           QString::number(candidate[QStringLiteral("flip")].toDouble(), 'f', 4),
           psnrText(candidate[QStringLiteral("psnr")])};
@@ -276,7 +278,7 @@ void ChooseForMeDialog::showReport(const QJsonObject& report) {
       }
       if (picked && slot) {
         if (const auto found = core::findTextureFormat(format.toStdString()))
-          m_chosen[*slot] = *found;
+          m_chosen[*slot] = Choice{*found, float(rdo)};
       }
       first = false;
     }
@@ -296,14 +298,15 @@ void ChooseForMeDialog::apply() {
   if (m_chosen.empty())
     return;
   QStringList names;
-  for (const auto& [slot, format] : m_chosen)
-    names << toQString(core::textureFormatInfo(format).name);
+  for (const auto& [slot, choice] : m_chosen)
+    names << toQString(core::textureFormatInfo(choice.format).name);
   m_document->undoStack()->beginMacro(
       tr("Choose for Me: %1").arg(names.join(QStringLiteral(", "))));
-  for (const auto& [slot, format] : m_chosen) {
+  for (const auto& [slot, choice] : m_chosen) {
     core::CompressionSettings settings =
         m_document->compression(slot).value_or(core::CompressionSettings{});
-    settings.format = format;
+    settings.format = choice.format;
+    settings.rdoLambda = choice.rdoLambda;
     settings.quality = core::CompressionQuality::Normal;  // what the chooser measured
     settings.mipmaps = true;
     settings.zstdLevel = kZstdLevel;  // the size the choice was made for

@@ -48,8 +48,13 @@ class ChooseForMeDialog : public QDialog {
   QTableWidget* table() const { return m_table; }
   QLabel* summary() const { return m_summary; }
   bool running() const { return m_process && m_process->state() != QProcess::NotRunning; }
-  // The last finished run's choice: a format per map; empty when nothing was chosen.
-  const std::map<core::MapSlot, core::TextureFormat>& chosen() const { return m_chosen; }
+  // The last finished run's choice: a format and an RDO trade (0: none) per map; empty when
+  // nothing was chosen.
+  struct Choice {
+    core::TextureFormat format;
+    float rdoLambda = 0.0f;
+  };
+  const std::map<core::MapSlot, Choice>& chosen() const { return m_chosen; }
 
  public Q_SLOTS:
   void choose();  // starts a run, or cancels the running one
@@ -85,7 +90,7 @@ class ChooseForMeDialog : public QDialog {
   std::unique_ptr<QTemporaryDir> m_folder;
   QByteArray m_errors;   // the run's standard error, less its progress lines
   QByteArray m_pending;  // the start of a line not yet complete
-  std::map<core::MapSlot, core::TextureFormat> m_chosen;
+  std::map<core::MapSlot, Choice> m_chosen;
 };
 
 }  // namespace relief::ui::inline compare

@@ -1,6 +1,7 @@
 // CompareAllDialog; see CompareAllDialog.h.
 #include "ui/compare/CompareAllDialog.h"
 
+#include "core/compression/BlockRdo.h"
 #include "ui/QtText.h"
 
 #include <QChart>
@@ -27,6 +28,10 @@ namespace {
 // about kLabelWidth of the plot's width and kLabelHeight of its height in the dialog's default
 // size; closer points than that would print their labels over each other.
 constexpr double kChartBits = 9.0;
+// The trades Compare All tries for each format with RDO, under Zstandard (BlockRdo.h).
+constexpr float kRdoLambdas[] = {8.0f, 32.0f};
+// Where a row's format item keeps its RDO lambda (Qt::UserRole holds the format).
+constexpr int kRdoRole = Qt::UserRole + 1;
 constexpr double kLabelWidth = 0.22;
 constexpr double kLabelHeight = 0.07;
 
@@ -112,7 +117,7 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
   connect(m_table, &QTableWidget::cellDoubleClicked, m_use, &QPushButton::click);
   connect(m_use, &QPushButton::clicked, this, [this] {
     if (const auto format = selectedFormat())
-      Q_EMIT formatChosen(m_slot, *format);
+      Q_EMIT formatChosen(m_slot, *format, selectedRdoLambda());
   });
   connect(m_runner, &CompressionRunner::progress, this,
           [this](double fraction, const QString& what) {
@@ -170,9 +175,19 @@ void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Ima
       ->setText(slot == core::MapSlot::Normal   ? tr("p99 angle, share > 2°")
                 : slot == core::MapSlot::Height ? tr("Parallax shift (texels)")
                                                 : tr("Max error"));
+  m_zstdLevel = zstdLevel;
   std::vector<core::CompressionJob> jobs;
-  for (core::TextureFormat format : core::formatsForSlot(slot))
+  for (core::TextureFormat format : core::formatsForSlot(slot)) {
     jobs.push_back({map, slot, {format, quality, mipmaps, zstdLevel}, heightScale});
+    // Under Zstandard, the formats with RDO get a row per trade too: the size-quality curve.
+    if (zstdLevel > 0 && core::formatHasRdo(format)) {
+      for (float lambda : kRdoLambdas) {
+        core::CompressionJob job{map, slot, {format, quality, mipmaps, zstdLevel}, heightScale};
+        job.settings.rdoLambda = lambda;
+        jobs.push_back(std::move(job));
+      }
+    }
+  }
   m_cancel->setEnabled(true);
   m_progress->setValue(0);
   updateChart();
@@ -181,6 +196,21 @@ void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Ima
 
 double CompareAllDialog::onDiskBitsPerTexel(const core::CompressionOutcome& outcome) const {
   return m_texels > 0.0 ? double(outcome.report.size->ktx2Bytes) * 8.0 / m_texels : 0.0;
+}
+
+float CompareAllDialog::selectedRdoLambda() const {
+  const QList<QTableWidgetItem*> selected = m_table->selectedItems();
+  if (selected.isEmpty())
+    return 0.0f;
+  return m_table->item(selected.front()->row(), FormatColumn)->data(kRdoRole).toFloat();
+}
+
+// "BC1 (DXT1)", or "BC1 (DXT1) · RDO 8" for a row with a trade.
+QString CompareAllDialog::rowName(const core::CompressionSettings& settings, bool shortName) {
+  const core::TextureFormatInfo& info = core::textureFormatInfo(settings.format);
+  const QString name = toQString(shortName ? info.name : info.label);
+  return settings.rdoLambda > 0.0f ? tr("%1 · RDO %2").arg(name).arg(double(settings.rdoLambda))
+                                   : name;
 }
 
 std::optional<core::TextureFormat> CompareAllDialog::selectedFormat() const {
@@ -197,12 +227,13 @@ void CompareAllDialog::addRow(const core::CompressionOutcome& outcome) {
   m_table->setSortingEnabled(false);
   const int row = m_table->rowCount();
   m_table->insertRow(row);
-  const bool materialChoice = m_materialChoice == format;
+  const bool materialChoice =
+      m_materialChoice == format && outcome.job.settings.rdoLambda == m_materialChoiceRdo;
   auto* name = new QTableWidgetItem(
-      materialChoice
-          ? tr("%1  ← Choose for Me").arg(toQString(core::textureFormatInfo(format).label))
-          : toQString(core::textureFormatInfo(format).label));
+      materialChoice ? tr("%1  ← Choose for Me").arg(rowName(outcome.job.settings))
+                     : rowName(outcome.job.settings));
   name->setData(Qt::UserRole, int(format));
+  name->setData(kRdoRole, double(outcome.job.settings.rdoLambda));
   if (materialChoice) {
     QFont font = name->font();
     font.setBold(true);
@@ -265,6 +296,13 @@ void CompareAllDialog::updateChart() {
   const bool normal = m_slot == core::MapSlot::Normal;
   chart->setTitle(normal ? tr("Mean angular error against bits per texel (lower is better)")
                          : tr("PSNR against bits per texel (higher is better)"));
+  // With Zstandard the axis is what ships (RDO moves nothing else); otherwise the format's rate.
+  const bool onDisk = m_zstdLevel > 0;
+  double chartBits = kChartBits;
+  for (const core::CompressionOutcome& outcome : m_outcomes)
+    chartBits = std::max(chartBits, std::ceil(onDiskBitsPerTexel(outcome) + 0.5));
+  if (!onDisk)
+    chartBits = kChartBits;
   // One series per format, so each point carries its format's name as its label (Qt 6.4 has
   // no per-point label text).
   const auto quality = [normal](const core::CompressionOutcome& outcome) {
@@ -280,21 +318,22 @@ void CompareAllDialog::updateChart() {
   std::vector<QScatterSeries*> series;
   std::vector<QPointF> labelled;  // points whose label is shown, in axis fractions
   for (const core::CompressionOutcome& outcome : m_outcomes) {
-    const QPointF at(outcome.report.size->bitsPerPixel, quality(outcome));
+    const QPointF at(onDisk ? onDiskBitsPerTexel(outcome) : outcome.report.size->bitsPerPixel,
+                     quality(outcome));
     auto* point = new QScatterSeries;
-    point->setName(toQString(core::textureFormatInfo(outcome.job.settings.format).label));
+    point->setName(rowName(outcome.job.settings));
     point->setMarkerSize(10.0);
     // The label says what ships too: the KTX2 file's bits per texel on disk.
-    const QString label =
-        tr("%1 (%2 on disk)")
-            .arg(toQString(core::textureFormatInfo(outcome.job.settings.format).name))
-            .arg(onDiskBitsPerTexel(outcome), 0, 'f', 2);
+    const QString label = onDisk ? rowName(outcome.job.settings, true)
+                                 : tr("%1 (%2 on disk)")
+                                       .arg(rowName(outcome.job.settings, true))
+                                       .arg(onDiskBitsPerTexel(outcome), 0, 'f', 2);
     point->setPointLabelsFormat(label);
     point->setPointLabelsClipping(false);
     // Qt centres a point's label above it: two points closer than a label's size would print
     // over each other (BC4 and EAC R11 of a height map sit at the same rate and nearly the same
     // PSNR). The later one's label is left off; the legend and a tooltip still name it.
-    const QPointF fraction(at.x() / kChartBits, (at.y() - yLow) / std::max(yHigh - yLow, 1e-9));
+    const QPointF fraction(at.x() / chartBits, (at.y() - yLow) / std::max(yHigh - yLow, 1e-9));
     const bool overlaps = std::any_of(labelled.begin(), labelled.end(), [&](QPointF other) {
       return std::abs(other.x() - fraction.x()) < kLabelWidth &&
              std::abs(other.y() - fraction.y()) < kLabelHeight;
@@ -313,8 +352,9 @@ void CompareAllDialog::updateChart() {
     series.push_back(point);
   }
   auto* x = new QValueAxis;
-  x->setTitleText(tr("bits per texel"));
-  x->setRange(0.0, kChartBits);
+  x->setTitleText(onDisk ? tr("bits per texel on disk (KTX2, Zstandard %1)").arg(m_zstdLevel)
+                         : tr("bits per texel"));
+  x->setRange(0.0, chartBits);
   x->setTickCount(10);
   x->setLabelFormat(QStringLiteral("%d"));
   auto* y = new QValueAxis;

@@ -1,7 +1,9 @@
 // CompareAllDialog: "compare all formats" for one map. Compresses it in every format that can
 // hold it (in the background, with progress and cancel), then lists size and quality in a
 // sortable table and plots quality against bits per pixel (QtCharts), one labelled point per
-// format. Choosing a row and "Use Format" hands the format back to the Compress panel.
+// format; under Zstandard the formats with RDO get rows at two trades (lambda 8 and 32) and the
+// chart's axis is the size on disk, so each draws its size-quality curve. Choosing a row and
+// "Use Format" hands the format (and its trade) back to the Compress panel.
 #pragma once
 
 #include "core/compression/Compressor.h"
@@ -40,12 +42,17 @@ class CompareAllDialog : public QDialog {
   QChartView* chartView() const { return m_chartView; }
   const std::vector<core::CompressionOutcome>& outcomes() const { return m_outcomes; }
   std::optional<core::TextureFormat> selectedFormat() const;
+  float selectedRdoLambda() const;  // the selected row's RDO trade; 0 without
   // The format Choose for Me picked for this map (ChooseForMeDialog), marked in its row; set
   // before start().
-  void setMaterialChoice(std::optional<core::TextureFormat> format) { m_materialChoice = format; }
+  void setMaterialChoice(std::optional<core::TextureFormat> format, float rdoLambda = 0.0f) {
+    m_materialChoice = format;
+    m_materialChoiceRdo = rdoLambda;
+  }
 
  Q_SIGNALS:
-  void formatChosen(relief::core::MapSlot slot, relief::core::TextureFormat format);
+  void formatChosen(relief::core::MapSlot slot, relief::core::TextureFormat format,
+                    float rdoLambda);
 
  protected:
   void reject() override;  // Close also cancels
@@ -67,6 +74,9 @@ class CompareAllDialog : public QDialog {
   double m_texels = 0.0;  // of the map compared
   std::vector<core::CompressionOutcome> m_outcomes;
   std::optional<core::TextureFormat> m_materialChoice;
+  float m_materialChoiceRdo = 0.0f;
+  int m_zstdLevel = 0;
+  static QString rowName(const core::CompressionSettings& settings, bool shortName = false);
 };
 
 }  // namespace relief::ui::inline compare

@@ -1,6 +1,7 @@
 // CompressPanel; see CompressPanel.h.
 #include "ui/panels/CompressPanel.h"
 
+#include "core/compression/BlockRdo.h"
 #include "core/compression/TextureFile.h"
 #include "ui/QtText.h"
 #include "ui/compare/ChooseForMeDialog.h"
@@ -18,11 +19,13 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSlider>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace relief::ui::inline panels {
@@ -134,6 +137,17 @@ void CompressPanel::createOptionsAndActions() {
       tr("KTX2 files: supercompress the blocks with Zstandard (lossless; 1 fastest, 22 "
          "smallest). The GPU gets the same blocks; the file and the download shrink. The "
          "results show the size on disk."));
+  m_rdo = new QSlider(Qt::Horizontal, this);
+  m_rdo->setObjectName(QStringLiteral("rdoLambda"));
+  m_rdo->setRange(0, kRdoSteps);
+  m_rdo->setToolTip(
+      tr("Rate-distortion optimisation for BC1, BC3, BC4, BC5 and BC7: blocks repeat their "
+         "neighbours' bytes where that costs little quality, so the file after Zstandard (or a "
+         "game's own LZ) shrinks. Off at the left; each step right doubles the trade (lambda). "
+         "On release the maps are compressed again and the results show the new size and "
+         "quality."));
+  m_rdoLabel = new QLabel(this);
+  m_rdoLabel->setMinimumWidth(m_rdoLabel->fontMetrics().horizontalAdvance(tr("RDO 512")));
   m_compress = new QPushButton(tr("Compress"), this);
   m_compress->setToolTip(tr("Compress the chosen maps in the background (Ctrl+Shift+K)"));
   m_cancel = new QPushButton(tr("Cancel"), this);
@@ -202,6 +216,11 @@ void CompressPanel::layOut(QGridLayout* formats) {
   options->addWidget(new QLabel(tr("KTX2 Zstandard:"), this));
   options->addWidget(m_zstd);
   layout->addLayout(options);
+  auto* rdoRow = new QHBoxLayout;
+  rdoRow->addWidget(new QLabel(tr("Smaller after Zstd:"), this));
+  rdoRow->addWidget(m_rdo, 1);
+  rdoRow->addWidget(m_rdoLabel);
+  layout->addLayout(rdoRow);
   layout->addWidget(m_roughnessFold);
   layout->addLayout(actions);
   layout->addWidget(m_progress);
@@ -252,6 +271,12 @@ void CompressPanel::connectSignals() {
   });
   connect(m_document, &MaterialDocument::compressionChanged, this, [this] { syncFromDocument(); });
   connect(m_mipmaps, &QCheckBox::toggled, this, [this] { writeMipChain(); });
+  connect(m_rdo, &QSlider::valueChanged, this, [this] {
+    showRdoValue();
+    if (!m_rdo->isSliderDown())
+      writeRdo();  // keys and clicks; a drag writes on release
+  });
+  connect(m_rdo, &QSlider::sliderReleased, this, [this] { writeRdo(); });
   connect(m_mipFilter, &QComboBox::activated, this, [this] { writeMipChain(); });
   connect(m_roughnessFold, &QCheckBox::toggled, this, [this](bool on) {
     core::MapCompression choice = m_document->compression(core::MapSlot::Roughness);
@@ -260,6 +285,55 @@ void CompressPanel::connectSignals() {
     choice->roughnessFromNormals = on;
     m_document->setCompression(core::MapSlot::Roughness, choice);
   });
+}
+
+// The RDO slider's steps: 0 is off, step k > 0 is lambda 2^((k - 1) / 2) / 2 (0.5 .. 512), each
+// step 1.4 times the last, so the mild end (1-8) has room.
+double CompressPanel::rdoLambda() const {
+  const int step = m_rdo->value();
+  return step == 0 ? 0.0 : 0.5 * std::pow(2.0, double(step - 1) / 2.0);
+}
+
+int CompressPanel::rdoStep(double lambda) {
+  return lambda <= 0.0
+             ? 0
+             : std::clamp(int(std::lround(2.0 * std::log2(lambda / 0.5))) + 1, 1, kRdoSteps);
+}
+
+void CompressPanel::showRdoValue() {
+  const double lambda = rdoLambda();
+  m_rdoLabel->setText(lambda == 0.0 ? tr("off") : tr("RDO %1").arg(lambda, 0, 'g', 3));
+}
+
+// The trade is one choice for every map whose format has RDO, written as one undo step; with
+// results on show, the maps are compressed again so the table shows the size and quality.
+void CompressPanel::writeRdo() {
+  if (m_syncing)
+    return;
+  const float lambda = float(rdoLambda());
+  bool changes = false;
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    const core::MapCompression& choice = m_document->compression(slot);
+    changes =
+        changes || (choice && core::formatHasRdo(choice->format) && choice->rdoLambda != lambda);
+  }
+  if (!changes)
+    return;
+  // RDO pays after LZ: with Zstandard off the sizes shown would not move.
+  if (lambda > 0.0f && m_zstd->value() == 0)
+    m_zstd->setValue(kRdoZstdLevel);
+  m_document->undoStack()->beginMacro(lambda > 0.0f ? tr("RDO %1").arg(double(lambda), 0, 'g', 3)
+                                                    : tr("No RDO"));
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    core::MapCompression choice = m_document->compression(slot);
+    if (!choice || !core::formatHasRdo(choice->format))
+      continue;
+    choice->rdoLambda = lambda;
+    m_document->setCompression(slot, choice);
+  }
+  m_document->undoStack()->endMacro();
+  if (!m_outcomes.empty() && !m_runner->isRunning())
+    compress();
 }
 
 // The mip chain is one choice for every compressed map (as the panel compresses them): written
@@ -345,6 +419,15 @@ void CompressPanel::syncFromDocument() {
     }
   }
   m_mipFilter->setEnabled(m_mipmaps->isChecked());
+  // The trade shown is the first map's that has RDO (the panel writes one into all of them).
+  for (core::MapSlot slot : core::kAllMapSlots) {
+    const core::MapCompression& choice = m_document->compression(slot);
+    if (choice && core::formatHasRdo(choice->format)) {
+      m_rdo->setValue(rdoStep(choice->rdoLambda));
+      break;
+    }
+  }
+  showRdoValue();
   const core::MapCompression& roughness = m_document->compression(core::MapSlot::Roughness);
   m_roughnessFold->setEnabled(roughness && roughness->mipmaps &&
                               m_document->material().hasMap(core::MapSlot::Roughness) &&
@@ -363,13 +446,16 @@ void CompressPanel::writeChoice(core::MapSlot slot) {
     // A preset's choice keeps its Zstandard level and perceptual flag; the mip chain is the
     // panel's (one for every map).
     const core::MapCompression& previous = m_document->compression(slot);
-    choice = core::CompressionSettings{core::TextureFormat(format),
-                                       core::CompressionQuality(row.quality->currentData().toInt()),
-                                       m_mipmaps->isChecked(),
-                                       previous ? previous->zstdLevel : m_zstd->value(),
-                                       previous && previous->perceptual,
-                                       core::MipFilter(m_mipFilter->currentData().toInt()),
-                                       previous && previous->roughnessFromNormals};
+    choice = core::CompressionSettings{
+        core::TextureFormat(format),
+        core::CompressionQuality(row.quality->currentData().toInt()),
+        m_mipmaps->isChecked(),
+        previous ? previous->zstdLevel : m_zstd->value(),
+        previous && previous->perceptual,
+        core::MipFilter(m_mipFilter->currentData().toInt()),
+        previous && previous->roughnessFromNormals,
+        previous ? previous->alphaCoverage : 0.0f,
+        core::formatHasRdo(core::TextureFormat(format)) ? float(rdoLambda()) : 0.0f};
   }
   m_document->setCompression(slot, choice);
 }
@@ -412,7 +498,9 @@ void CompressPanel::compress() {
                     m_zstd->value(),
                     false,
                     core::MipFilter(m_mipFilter->currentData().toInt()),
-                    choice && choice->roughnessFromNormals};
+                    choice && choice->roughnessFromNormals,
+                    choice ? choice->alphaCoverage : 0.0f,
+                    choice ? choice->rdoLambda : 0.0f};
     job.heightScale = heightScale;
     job.spreadNormals = material.map(core::MapSlot::Normal).image;
     jobs.push_back(std::move(job));
@@ -504,9 +592,11 @@ CompareAllDialog* CompressPanel::compareAllDialog() {
   if (!m_compareAllDialog) {
     m_compareAllDialog = new CompareAllDialog(this);
     connect(m_compareAllDialog, &CompareAllDialog::formatChosen, this,
-            [this](core::MapSlot slot, core::TextureFormat format) {
+            [this](core::MapSlot slot, core::TextureFormat format, float rdoLambda) {
               Row& row = m_rows[std::size_t(slot)];
               row.format->setCurrentIndex(row.format->findData(int(format)));
+              if (rdoLambda > 0.0f)
+                m_rdo->setValue(rdoStep(rdoLambda));  // one trade for every map, as the slider
               Q_EMIT statusMessage(tr("%1 map will be compressed as %2")
                                        .arg(toQString(core::mapSlotLabel(slot)),
                                             toQString(core::textureFormatInfo(format).label)));
@@ -520,6 +610,8 @@ ChooseForMeDialog* CompressPanel::chooseForMeDialog() {
     m_chooseForMeDialog = new ChooseForMeDialog(m_document, m_viewDocument, this);
     connect(m_chooseForMeDialog, &ChooseForMeDialog::applied, this, [this] {
       m_wipeWhenCompressed = true;
+      if (m_zstd->value() == 0)
+        m_zstd->setValue(kRdoZstdLevel);  // the sizes the choice was made for
       compress();
       Q_EMIT statusMessage(tr("Choose for Me's formats applied; compressing for the wipe"));
     });
@@ -565,9 +657,12 @@ void CompressPanel::openCompareAll() {
   const Row& row = m_rows[std::size_t(*slot)];
   CompareAllDialog* dialog = compareAllDialog();
   std::optional<core::TextureFormat> materialChoice;
-  if (m_chooseForMeDialog && m_chooseForMeDialog->chosen().count(*slot))
-    materialChoice = m_chooseForMeDialog->chosen().at(*slot);
-  dialog->setMaterialChoice(materialChoice);
+  float materialChoiceRdo = 0.0f;
+  if (m_chooseForMeDialog && m_chooseForMeDialog->chosen().count(*slot)) {
+    materialChoice = m_chooseForMeDialog->chosen().at(*slot).format;
+    materialChoiceRdo = m_chooseForMeDialog->chosen().at(*slot).rdoLambda;
+  }
+  dialog->setMaterialChoice(materialChoice, materialChoiceRdo);
   dialog->start(*slot, m_document->material().map(*slot).image,
                 core::CompressionQuality(row.quality->currentData().toInt()),
                 m_mipmaps->isChecked(), m_zstd->value(),

@@ -19,6 +19,7 @@
 
 class QCheckBox;
 class QGridLayout;
+class QSlider;
 class QSpinBox;
 class QComboBox;
 class QLabel;
@@ -41,6 +42,10 @@ class CompressPanel : public QWidget {
   QCheckBox* mipmapsBox() const { return m_mipmaps; }
   QComboBox* mipFilterBox() const { return m_mipFilter; }
   QCheckBox* roughnessFoldBox() const { return m_roughnessFold; }
+  QSlider* rdoSlider() const { return m_rdo; }
+  // The RDO lambda the slider stands at (0: off), and the step that shows a lambda.
+  double rdoLambda() const;
+  static int rdoStep(double lambda);
   QPushButton* compressButton() const { return m_compress; }
   QPushButton* cancelButton() const { return m_cancel; }
   QTableWidget* resultsTable() const { return m_results; }
@@ -79,6 +84,8 @@ class CompressPanel : public QWidget {
   void syncFromDocument();
   void writeChoice(core::MapSlot slot);
   void writeMipChain();
+  void writeRdo();
+  void showRdoValue();
   void dropStalePreviews();
   void showOutcomes();
   void showPreviews();  // the results as the view document's compressed previews
@@ -92,6 +99,10 @@ class CompressPanel : public QWidget {
   QComboBox* m_mipFilter;
   QCheckBox* m_roughnessFold;
   QSpinBox* m_zstd;
+  QSlider* m_rdo;
+  QLabel* m_rdoLabel;
+  static constexpr int kRdoSteps = 21;      // lambda 0.5 .. 512
+  static constexpr int kRdoZstdLevel = 19;  // what RDO turns on when Zstandard is off
   QPushButton* m_compress;
   QPushButton* m_cancel;
   QProgressBar* m_progress;
