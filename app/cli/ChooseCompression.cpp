@@ -3,6 +3,7 @@
 
 #include "app/cli/CliOptionNames.h"
 
+#include "ChooseOptions.h"
 #include "TerminalProgress.h"
 #include "core/base/AtomicFile.h"
 #include "core/base/ByteSize.h"
@@ -219,43 +220,21 @@ QString unmetMessage(const renderer::ChooserResult& result, const ChooseRequest&
 }  // namespace
 
 CliOptions chooseCompressionOptions() {
-  return {
+  CliOptions options = {
       {option::kChooseCompression,
        {},
        QStringLiteral("Choose every map's format for a goal (what `compress --preset` runs)."),
        {}},
-      {option::kBudget,
-       QStringLiteral("size"),
-       QStringLiteral("compress --preset: the bytes all maps may take as shipped (KTX2 after "
-                      "Zstandard), e.g. 6MB, 512KiB, 700000."),
-       {}},
-      {option::kTargetFlip,
-       QStringLiteral("X"),
-       QStringLiteral("compress --preset: the rendered FLIP (0..1) the material may reach."),
-       {}},
-      {option::kTargetPsnr,
-       QStringLiteral("dB"),
-       QStringLiteral("compress --preset: the rendered PSNR the material must keep."),
-       {}},
-      {option::kDevice, QStringLiteral("desktop|mobile"),
-       QStringLiteral("compress --preset: BC formats, or ETC2/EAC and ASTC."),
-       QStringLiteral("desktop")},
-      {option::kOutDir,
-       QStringLiteral("folder"),
-       QStringLiteral("compress --preset: where the chosen files and choice.json go."),
-       {}},
       {option::kQuality, QStringLiteral("quality"),
-       QStringLiteral("compress --preset: the encoders' effort (fast|normal|best)."),
+       QStringLiteral("With --preset: the encoders' effort (fast|normal|best)."),
        QStringLiteral("normal")},
       {option::kZstd, QStringLiteral("level"),
-       QStringLiteral("compress --preset: the Zstandard level sizes count after (1..22)."),
+       QStringLiteral("With --preset: the Zstandard level sizes count after (1..22)."),
        QStringLiteral("19")},
-      {option::kProgressLines,
-       {},
-       QStringLiteral("compress --preset: progress as lines 'progress 0.42' on standard error "
-                      "(for a GUI or a build log)."),
-       {}},
   };
+  for (CliOption& goal : chooseGoalOptions())
+    options.push_back(std::move(goal));
+  return options;
 }
 
 QStringList chooseCompressionArguments(QStringList arguments) {

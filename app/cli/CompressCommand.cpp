@@ -3,6 +3,7 @@
 
 #include "app/cli/CliOptionNames.h"
 
+#include "ChooseOptions.h"
 #include "CliCommon.h"
 #include "TerminalProgress.h"
 #include "core/compression/BlockRdo.h"
@@ -131,37 +132,11 @@ CliOptions compressOptions() {
                                     "judged on the rendered material, and write the files into "
                                     "--out-dir (--zstd defaults to 19 here). Needs a display."),
                      {}});
-  options.push_back({option::kBudget,
-                     QStringLiteral("size"),
-                     QStringLiteral("With --preset: the bytes all maps may take as shipped (KTX2 "
-                                    "after Zstandard): 6MB, 512KiB, 700000."),
-                     {}});
-  options.push_back({option::kTargetFlip,
-                     QStringLiteral("X"),
-                     QStringLiteral("With --preset: the fewest bytes whose rendered FLIP (mean "
-                                    "over close, grazing and far views) is at most X."),
-                     {}});
-  options.push_back({option::kTargetPsnr,
-                     QStringLiteral("dB"),
-                     QStringLiteral("With --preset: the fewest bytes whose rendered PSNR is at "
-                                    "least this."),
-                     {}});
-  options.push_back({option::kDevice, QStringLiteral("desktop|mobile"),
-                     QStringLiteral("With --preset: BC formats, or ETC2/EAC and ASTC."),
-                     QStringLiteral("desktop")});
-  options.push_back({option::kOutDir,
-                     QStringLiteral("folder"),
-                     QStringLiteral("With --preset: where the chosen KTX2 files and choice.json "
-                                    "go."),
-                     {}});
+  for (CliOption& goal : chooseGoalOptions())
+    options.push_back(std::move(goal));
   options.push_back({option::kSize, QStringLiteral("WxH"),
                      QStringLiteral("With --preset: the rendered views' size."),
                      QStringLiteral("640x360")});
-  options.push_back({option::kProgressLines,
-                     {},
-                     QStringLiteral("With --preset: progress as 'progress 0.42' lines on "
-                                    "standard error."),
-                     {}});
   options.push_back(jsonOption());
   return options;
 }

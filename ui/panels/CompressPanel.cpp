@@ -26,6 +26,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace relief::ui::inline panels {
@@ -143,7 +144,7 @@ void CompressPanel::createOptionsAndActions() {
   m_rdo->setToolTip(
       tr("Rate-distortion optimisation for BC1, BC3, BC4, BC5 and BC7: blocks repeat their "
          "neighbours' bytes where that costs little quality, so the file after Zstandard (or a "
-         "game's own LZ) shrinks. Off at the left; each step right doubles the trade (lambda). "
+         "game's own LZ) shrinks. Off at the left; further right trades more (lambda 0.5 to 768). "
          "On release the maps are compressed again and the results show the new size and "
          "quality."));
   m_rdoLabel = new QLabel(this);
@@ -287,17 +288,26 @@ void CompressPanel::connectSignals() {
   });
 }
 
-// The RDO slider's steps: 0 is off, step k > 0 is lambda 2^((k - 1) / 2) / 2 (0.5 .. 512), each
-// step 1.4 times the last, so the mild end (1-8) has room.
+// The RDO slider's steps: off, then round lambdas from 0.5 to 768, each 1.33 to 2 times the last
+// (1, 2, 3, 4, 6, 8, ...), so the mild end has room and the label reads as a number one types.
+namespace {
+constexpr std::array<double, 21> kRdoLambdaSteps = {0.0,  0.5,   1.0,   2.0,   3.0,   4.0,   6.0,
+                                                    8.0,  12.0,  16.0,  24.0,  32.0,  48.0,  64.0,
+                                                    96.0, 128.0, 192.0, 256.0, 384.0, 512.0, 768.0};
+}  // namespace
+
 double CompressPanel::rdoLambda() const {
-  const int step = m_rdo->value();
-  return step == 0 ? 0.0 : 0.5 * std::pow(2.0, double(step - 1) / 2.0);
+  return kRdoLambdaSteps[std::size_t(std::clamp(m_rdo->value(), 0, kRdoSteps))];
 }
 
 int CompressPanel::rdoStep(double lambda) {
-  return lambda <= 0.0
-             ? 0
-             : std::clamp(int(std::lround(2.0 * std::log2(lambda / 0.5))) + 1, 1, kRdoSteps);
+  int nearest = 0;
+  for (int step = 1; step <= kRdoSteps; ++step) {
+    if (std::abs(kRdoLambdaSteps[std::size_t(step)] - lambda) <
+        std::abs(kRdoLambdaSteps[std::size_t(nearest)] - lambda))
+      nearest = step;
+  }
+  return nearest;
 }
 
 void CompressPanel::showRdoValue() {

@@ -101,7 +101,7 @@ class CompressPanel : public QWidget {
   QSpinBox* m_zstd;
   QSlider* m_rdo;
   QLabel* m_rdoLabel;
-  static constexpr int kRdoSteps = 21;      // lambda 0.5 .. 512
+  static constexpr int kRdoSteps = 20;      // lambda 0.5 .. 768 (CompressPanel.cpp's table)
   static constexpr int kRdoZstdLevel = 19;  // what RDO turns on when Zstandard is off
   QPushButton* m_compress;
   QPushButton* m_cancel;
