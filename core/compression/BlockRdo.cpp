@@ -35,18 +35,15 @@ std::span<const Part> partsOf(TextureFormat format) {
   static constexpr Part kBc3[] = {{0, 2}, {2, 8}, {8, 12}, {12, 16}};  // alpha | colour
   static constexpr Part kBc5[] = {{0, 2}, {2, 8}, {8, 10}, {10, 16}};  // red | green
   static constexpr Part kBc7[] = {{0, 8}, {8, 16}};
-  switch (format) {
-    case TextureFormat::Bc1:
-      return kBc1;
-    case TextureFormat::Bc4:
-      return kBc4;
-    case TextureFormat::Bc3:
-      return kBc3;
-    case TextureFormat::Bc5:
-      return kBc5;
-    default:
-      return kBc7;
-  }
+  if (format == TextureFormat::Bc1)
+    return kBc1;
+  if (format == TextureFormat::Bc4)
+    return kBc4;
+  if (format == TextureFormat::Bc3)
+    return kBc3;
+  if (format == TextureFormat::Bc5)
+    return kBc5;
+  return kBc7;  // BC7; formatHasRdo admits no other
 }
 
 // Which decoded channels the format stores (others are constants a GPU fills in).
