@@ -1,5 +1,5 @@
 // `relief-cli compress --preset P --budget|--target-flip|--target-psnr --out-dir D` (choose for
-// me, renderer/CompressionChooser.h) as a user runs it, on a 128x128 cut of the cobblestones
+// me, renderer/CompressionChooser.h) as a user runs it, on a 64x64 cut of the cobblestones
 // (colour, normal, height). The budget is never exceeded by the files written, whose bytes are
 // what the JSON reports and whose formats are the ones it names; a budget below the smallest
 // combination is refused naming that size, and writes nothing; a target met is met as
@@ -27,7 +27,7 @@ QString q(const std::string& text) {
   return QString::fromStdString(text);
 }
 
-constexpr int kCut = 128;
+constexpr int kCut = 64;
 
 std::string cutMaterial() {
   return croppedSamplePreset("cobblestones", kCut, scratchFolder() + "/choose-material");
@@ -99,7 +99,7 @@ TEST(ChooseForMe, TheBudgetHoldsAndTheFilesAreTheChoice) {
     ASSERT_TRUE(texture.ok()) << texture.error();
     EXPECT_EQ(core::textureFormatInfo(texture->format).name, map["format"].toString().toStdString())
         << file;
-    EXPECT_EQ(texture->levels.size(), 8u) << file << ": a full chain of a 128x128 map";
+    EXPECT_EQ(texture->levels.size(), 7u) << file << ": a full chain of a 64x64 map";
     EXPECT_TRUE(texture->zstdInFile) << file;
     int chosen = 0;
     for (const QJsonValue& candidate : map["candidates"].toArray())
