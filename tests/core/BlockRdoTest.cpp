@@ -3,7 +3,8 @@
 // the KTX2 file after Zstandard larger and adds at most the error docs/compression.md states
 // (lambda is squared error per bit, so the bound is absolute: the RMS error, in 8-bit levels and
 // averaged over the photographs, grows by at most 0.25 at lambda 2 and 1 at lambda 8, whatever
-// the format; measured: BC1 +0.00/+0.01, BC7 +0.01/+0.24, BC4 +0.05/+0.32, BC5 +0.16/+0.88);
+// the format; measured on the 128x128 crops: BC1 +0.00/+0.01, BC7 +0.01/+0.25, BC4 +0.03/+0.30,
+// BC5 +0.16/+0.91);
 // the rate estimate counts what an LZ coder stores; and flat gradients keep their encoder's fit
 // (the smooth-block guard).
 #include "core/compression/BlockRdo.h"
@@ -52,7 +53,7 @@ TEST(BlockRdo, LambdaZeroIsTheEncodersBlocks) {
 }
 
 TEST(BlockRdo, RisingLambdaShrinksTheFileWithinTheStatedLoss) {
-  const std::vector<Image> photos = test::photographCrops(256);
+  const std::vector<Image> photos = test::photographCrops(128);
   ASSERT_FALSE(photos.empty());
   struct Case {
     TextureFormat format;
