@@ -3,8 +3,10 @@
 // are RGB 5:6:5 with bit replication, c0 > c1 selects four colours, otherwise three and
 // transparent black (BC2/BC3 colour blocks always use four); BC3 alpha and BC4/BC5 channels
 // interpolate 8 values when a0 > a1, else 6 plus 0 and 1.
+#include "core/compression/Bc6hBlock.h"
 #include "core/compression/Bc7Block.h"
 #include "core/compression/BlockCodecs.h"
+#include "core/image/HalfFloat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -201,6 +203,10 @@ void encodeBcBlock(TextureFormat format, CompressionQuality quality, bool percep
     encodeBc7Block(quality, texels, validMask, out);
     return;
   }
+  if (isHalfFloatFormat(format)) {
+    encodeBc6hBlock(format == TextureFormat::Bc6hSigned, quality, texels, validMask, out);
+    return;
+  }
   if (format == TextureFormat::Bc4 || format == TextureFormat::Bc5) {
     float values[16];
     for (int ch = 0; ch < (format == TextureFormat::Bc5 ? 2 : 1); ++ch) {
@@ -270,6 +276,14 @@ void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& te
     for (int t = 0; t < 16; ++t) {
       for (int ch = 0; ch < 4; ++ch)
         texels[t][ch] = float(rgba[t][ch]) / 255.0f;
+    }
+  } else if (isHalfFloatFormat(format)) {
+    std::uint16_t halves[16][3];
+    decodeBc6hBlock(in, format == TextureFormat::Bc6hSigned, halves);
+    for (int t = 0; t < 16; ++t) {
+      for (int ch = 0; ch < 3; ++ch)
+        texels[t][ch] = halfToFloat(halves[t][ch]);
+      texels[t][3] = 1.0f;
     }
   } else {
     throwNotOfFamily("decodeBcBlock", format);

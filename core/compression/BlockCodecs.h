@@ -34,6 +34,12 @@ void decodeBcBlock(TextureFormat format, const std::uint8_t* in, BlockTexels& te
 // encodeBcBlock and decodeBcBlock dispatch BC7 here too.
 void encodeBc7Block(CompressionQuality quality, const BlockTexels& texels, int validMask,
                     std::uint8_t* out);
+// BC6H, unsigned or signed half floats: our own encoder (Bc6hEncoder.cpp) and decoder
+// (Bc6hBlock.h); texels are linear values, RGB (alpha ignored). Not-a-number becomes 0,
+// infinities the largest half, and negatives 0 in the unsigned format. encodeBcBlock and
+// decodeBcBlock dispatch BC6H here too.
+void encodeBc6hBlock(bool isSigned, CompressionQuality quality, const BlockTexels& texels,
+                     int validMask, std::uint8_t* out);
 // One BC1 colour block (8 bytes) from RGB in 0..255. `bc1`: a BC1 block, which may use the
 // three-colour mode; otherwise the colour half of BC2/BC3, which always decodes four colours.
 void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality quality,

@@ -56,6 +56,7 @@ std::array<bool, 4> storedChannels(TextureFormat format) {
     case FormatLayout::Rgb:  // BC1's alpha too: a three-colour block's black is transparent
     case FormatLayout::Rgba:
     case FormatLayout::NormalAg:
+    case FormatLayout::RgbHalf:  // never asked: formatHasRdo admits no half-float format
       return {true, true, true, true};
   }
   return {true, true, true, true};  // not reached: every layout is handled above

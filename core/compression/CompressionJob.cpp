@@ -18,10 +18,31 @@ std::string formatSlotProblem(TextureFormat format, MapSlot slot) {
          lowerCase(mapSlotLabel(slot)) + " map";
 }
 
+std::string formatMapProblem(const Image& map, TextureFormat format, bool acceptIntegerMaps) {
+  if (!isHalfFloatFormat(format))
+    return {};
+  const std::string label(textureFormatInfo(format).label);
+  if (map.sourceBitsPerChannel() == 8 && !acceptIntegerMaps) {
+    return "it is an 8-bit map, and " + label +
+           " stores half floats for HDR and float maps (use BC4 or BC7 for 8-bit maps, or "
+           "convert it to float first)";
+  }
+  if (map.colorSpace() == ColorSpace::Srgb) {
+    return "it is sRGB-encoded colour, and " + label +
+           " stores linear values (an EXR or HDR image, or a float map)";
+  }
+  return {};
+}
+
 std::vector<std::string> compressionWarnings(const Image& map, TextureFormat format) {
   const TextureFormatInfo& info = textureFormatInfo(format);
   std::vector<std::string> warnings;
-  if (const double outside = shareOutsideUnitRange(map); outside > 0.0) {
+  if (isHalfFloatFormat(format)) {
+    if (std::string clamps = describeHalfFloatClamps(
+            countHalfFloatClamps(map, format == TextureFormat::Bc6hSigned), format);
+        !clamps.empty())
+      warnings.push_back(clamps);
+  } else if (const double outside = shareOutsideUnitRange(map); outside > 0.0) {
     char percent[32];
     std::snprintf(percent, sizeof percent, "%.3g", outside * 100.0);
     warnings.push_back(std::string(percent) +
@@ -39,6 +60,9 @@ Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
                                              const WorkControl& control) {
   if (std::string problem = formatSlotProblem(job.settings.format, job.slot); !problem.empty())
     return makeError(problem);
+  if (std::string problem = formatMapProblem(*job.map, job.settings.format, job.acceptIntegerMaps);
+      !problem.empty())
+    return makeError(problem);
   QElapsedTimer timer;
   timer.start();
   Result<CompressedTexture> texture =
@@ -55,6 +79,9 @@ Result<CompressionOutcome> runCompressionJob(const CompressionJob& job,
     if (!decoded)
       return makeError(decoded.error());
     outcome.report = makeCompressionReport(*job.map, decoded.value(), job.slot, job.heightScale);
+    // Half floats are judged in float even on a map within 0..1 (an HDR map already is).
+    if (isHalfFloatFormat(job.settings.format) && !outcome.report.hdr)
+      outcome.report.hdr = measureHdrError(*job.map, decoded.value());
     outcome.decoded = std::make_shared<const Image>(std::move(decoded).value());
   }
   outcome.report.slot = job.slot;

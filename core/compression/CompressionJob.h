@@ -29,6 +29,8 @@ struct CompressionJob {
   bool measure = true;
   // The normal map a roughness map's mips fold in (settings.roughnessFromNormals).
   std::shared_ptr<const Image> spreadNormals = nullptr;
+  // Half-float formats take an 8-bit map only when asked (formatMapProblem).
+  bool acceptIntegerMaps = false;
 };
 
 struct CompressionOutcome {
@@ -43,6 +45,11 @@ struct CompressionOutcome {
 // Why the format cannot hold a map of this slot ("BC4 (ATI1) cannot hold a colour map"), or
 // empty when it can. Cheap: the CLI asks before loading anything else.
 std::string formatSlotProblem(TextureFormat format, MapSlot slot);
+// Why `format` should not take `map`, or empty: a half-float format (BC6H) refuses an 8-bit
+// map unless `acceptIntegerMaps` (its 0..1 values would spend 16 bits on 8 bits' worth, and
+// an 8-bit map given to BC6H is usually the wrong file or the wrong format), and sRGB-encoded
+// colour always (BC6H has no sRGB form: it holds linear values).
+std::string formatMapProblem(const Image& map, TextureFormat format, bool acceptIntegerMaps);
 // What compressing `map` into `format` loses that the artist should know (values clamped to
 // 0..1, channels dropped).
 std::vector<std::string> compressionWarnings(const Image& map, TextureFormat format);

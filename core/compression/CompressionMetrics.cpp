@@ -88,6 +88,59 @@ double channelSsim(const Image& a, const Image& b, int channel) {
 
 }  // namespace
 
+HdrError measureHdrError(const Image& reference, const Image& candidate) {
+  HdrError result;
+  if (reference.width() != candidate.width() || reference.height() != candidate.height() ||
+      reference.isEmpty())
+    return result;
+  const auto rgb = [](const Image& image, std::size_t p, int c) {
+    const float value = image.data()[p * std::size_t(image.channels()) +
+                                     std::size_t(std::min(c, image.channels() - 1))];
+    return std::isfinite(value) ? double(value) : 0.0;
+  };
+  const std::size_t pixels = reference.pixelCount();
+  double logLuminance = 0.0;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    for (int c = 0; c < 3; ++c)
+      result.referenceIsHdr =
+          result.referenceIsHdr || rgb(reference, p, c) > 1.0 || rgb(reference, p, c) < 0.0;
+    const double luminance = 0.2126 * rgb(reference, p, 0) + 0.7152 * rgb(reference, p, 1) +
+                             0.0722 * rgb(reference, p, 2);
+    logLuminance += std::log2(std::max(luminance, 1.0 / 16384.0));
+  }
+  const double key = logLuminance / double(pixels);
+  const int middle = int(std::lround(std::log2(0.18) - key));
+  result.firstStop = middle - 3;
+  result.lastStop = middle + 3;
+  // (v 2^c)^(1/2.2) = v^(1/2.2) 2^(c/2.2): one power per value, a factor per stop.
+  double gains[7];
+  for (int stop = result.firstStop; stop <= result.lastStop; ++stop)
+    gains[stop - result.firstStop] = std::exp2(double(stop) / 2.2);
+  const auto display = [](double gammaValue, double gain) {
+    return std::round(std::min(gammaValue * gain, 1.0) * 255.0);
+  };
+  double squared = 0.0, logError = 0.0;
+  const double epsilon = 1.0 / 16384.0;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    for (int c = 0; c < 3; ++c) {
+      const double a = rgb(reference, p, c), b = rgb(candidate, p, c);
+      logError += std::abs(std::log2((std::abs(a) + epsilon) / (std::abs(b) + epsilon)));
+      const double ga = std::pow(std::max(0.0, a), 1.0 / 2.2);
+      const double gb = std::pow(std::max(0.0, b), 1.0 / 2.2);
+      for (const double gain : gains) {
+        const double d = display(ga, gain) - display(gb, gain);
+        squared += d * d;
+      }
+    }
+  }
+  const double stops = double(result.lastStop - result.firstStop + 1);
+  const double mse = squared / (double(pixels) * 3.0 * stops);
+  result.exposurePsnr =
+      mse > 0.0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+  result.meanLog2Error = logError / (double(pixels) * 3.0);
+  return result;
+}
+
 ImageError measureImageError(const Image& reference, const Image& candidate) {
   ImageError result;
   const int channels = std::min(reference.channels(), candidate.channels());

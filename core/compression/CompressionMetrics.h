@@ -49,6 +49,27 @@ struct HeightError {
 
 HeightError measureHeightError(const Image& reference, const Image& candidate, double heightScale);
 
+// A high-dynamic-range map (BC6H) judged as HDR encoders are compared. Exposure PSNR is
+// Munkberg et al. 2006's multi-exposure PSNR: the linear RGB values are scaled by 2^c for each
+// stop c, gamma-corrected (1/2.2), clamped to 0..1 and quantised to 0..255 as a display would
+// show that exposure, and the squared error of all stops gives one PSNR (peak 255). The stops
+// are the seven around the reference's key: c0 - 3 .. c0 + 3, where 2^c0 takes the geometric
+// mean luminance (Rec. 709) to 0.18, mid grey. The log error is the mean over texels and
+// channels of |log2((|a| + e) / (|b| + e))| with e = 2^-14 (the smallest normal half), so a
+// texel's error counts in stops whatever its brightness.
+struct HdrError {
+  double exposurePsnr = 0.0;  // dB, infinity when identical
+  int firstStop = 0;
+  int lastStop = 0;
+  double meanLog2Error = 0.0;
+  // The reference holds values beyond 0..1: then exposure PSNR, not PSNR at peak 1, is the
+  // figure formats are ranked by (CompressionReport.h: headlineQuality).
+  bool referenceIsHdr = false;
+};
+
+// Compares RGB (a single channel counts as grey); the images must be the same size.
+HdrError measureHdrError(const Image& reference, const Image& candidate);
+
 struct SizeFigures {
   std::uint64_t bytes = 0;
   double bitsPerPixel = 0.0;  // of level 0 alone: the format's rate

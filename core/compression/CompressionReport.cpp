@@ -1,6 +1,7 @@
 // CompressionReport; see CompressionReport.h.
 #include "core/compression/CompressionReport.h"
 
+#include "core/compression/Compressor.h"
 #include "core/compression/Flip.h"
 
 #include <QJsonArray>
@@ -46,15 +47,28 @@ CompressionReport makeCompressionReport(const Image& reference, const Image& can
     report.height = measureHeightError(reference, candidate, heightScale);
     report.heightScale = heightScale;
   }
+  // An HDR map is judged in float too, whatever holds the candidate, so that its formats and
+  // other tools' files compare.
+  if (isHdrMap(reference, slot))
+    report.hdr = measureHdrError(reference, candidate);
   return report;
 }
 
+bool isHdrMap(const Image& map, MapSlot slot) {
+  return slot != MapSlot::Normal && map.colorSpace() == ColorSpace::Linear &&
+         map.sourceBitsPerChannel() >= 16 && shareOutsideUnitRange(map) > 0.0;
+}
+
 double headlineQuality(const CompressionReport& report) {
+  if (report.hdr && report.hdr->referenceIsHdr)
+    return report.hdr->exposurePsnr;
   return report.normal ? -report.normal->meanDegrees : report.image.psnr;
 }
 
-std::string headlineQualityName(MapSlot slot) {
-  return slot == MapSlot::Normal ? "mean angular error (degrees)" : "PSNR (dB)";
+std::string headlineQualityName(MapSlot slot, bool hdr) {
+  return slot == MapSlot::Normal ? "mean angular error (degrees)"
+         : hdr                   ? "exposure PSNR (dB)"
+                                 : "PSNR (dB)";
 }
 
 QJsonObject reportToJson(const CompressionReport& report) {
@@ -87,6 +101,12 @@ QJsonObject reportToJson(const CompressionReport& report) {
                                         {"meanTexels", report.height->meanTexels},
                                         {"p99Texels", report.height->p99Texels},
                                         {"maxTexels", report.height->maxTexels}};
+  }
+  if (report.hdr) {
+    json["hdr"] = QJsonObject{{"exposurePsnr", decibels(report.hdr->exposurePsnr)},
+                              {"firstStop", report.hdr->firstStop},
+                              {"lastStop", report.hdr->lastStop},
+                              {"meanLog2Error", report.hdr->meanLog2Error}};
   }
   if (report.size) {
     json["bytes"] = double(report.size->bytes);
@@ -128,6 +148,12 @@ std::string reportToText(const CompressionReport& report) {
         "max %.3f texels\n",
         report.heightScale, report.height->meanTexels, report.height->p99Texels,
         report.height->maxTexels);
+  }
+  if (report.hdr) {
+    text +=
+        "exposure PSNR: " + decibelText(report.hdr->exposurePsnr) +
+        format(" (stops %+.0f..%+.0f); mean log2 error %.4f stops\n", double(report.hdr->firstStop),
+               double(report.hdr->lastStop), report.hdr->meanLog2Error);
   }
   if (report.size) {
     text += format(

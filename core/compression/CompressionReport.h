@@ -19,6 +19,8 @@ struct CompressionReport {
   ImageError image;
   std::optional<NormalError> normal;  // normal maps
   std::optional<HeightError> height;  // height maps
+  // Half-float formats (BC6H), and every format given a linear map beyond 0..1: judged in float.
+  std::optional<HdrError> hdr;
   // FLIP (Flip.h) of the map as a viewer sees it: mean and 95th percentile, 0 = identical.
   double flip = 0.0;
   double flipP95 = 0.0;
@@ -34,10 +36,13 @@ struct CompressionReport {
 CompressionReport makeCompressionReport(const Image& reference, const Image& candidate,
                                         MapSlot slot, double heightScale, Image* flipMap = nullptr);
 
-// The figure "compare all formats" ranks by, larger is better: PSNR in dB for colour and data,
-// minus the mean angle in degrees for normals.
+// The figure "compare all formats" ranks by, larger is better: PSNR in dB for colour and data
+// (exposure PSNR for a map beyond 0..1: HDR), minus the mean angle in degrees for normals.
 double headlineQuality(const CompressionReport& report);
-std::string headlineQualityName(MapSlot slot);
+std::string headlineQualityName(MapSlot slot, bool hdr = false);
+// A map judged in float (HdrError): linear, 16 or 32 bits per channel, values beyond 0..1, and
+// not a normal map.
+bool isHdrMap(const Image& map, MapSlot slot);
 
 QJsonObject reportToJson(const CompressionReport& report);
 std::string reportToText(const CompressionReport& report);

@@ -7,6 +7,7 @@
 #include "core/compression/BlockRdo.h"
 #include "core/compression/MipChain.h"
 #include "core/compression/RoughnessFold.h"
+#include "core/image/HalfFloat.h"
 
 #include <algorithm>
 #include <atomic>
@@ -126,13 +127,15 @@ std::uint64_t CompressedTexture::byteSize() const {
 bool formatSuitsSlot(TextureFormat format, MapSlot slot) {
   const FormatLayout layout = textureFormatInfo(format).layout;
   switch (mapSlotTexels(slot)) {
-    case MapTexels::Colour:
-      return layout == FormatLayout::Rgb || layout == FormatLayout::Rgba;
+    case MapTexels::Colour:  // half floats: linear HDR colour (formatMapProblem refuses sRGB)
+      return layout == FormatLayout::Rgb || layout == FormatLayout::Rgba ||
+             layout == FormatLayout::RgbHalf;
     case MapTexels::Normal:
-      return layout != FormatLayout::R;
+      return layout != FormatLayout::R && layout != FormatLayout::RgbHalf;
     case MapTexels::Scalar:
+      // Half floats hold float heights and other float data beyond 8 bits' steps.
       return layout == FormatLayout::R || layout == FormatLayout::Rgb ||
-             (isAstc(format) && layout == FormatLayout::Rgba);
+             layout == FormatLayout::RgbHalf || (isAstc(format) && layout == FormatLayout::Rgba);
   }
   return false;  // not reached: every kind is handled above
 }
@@ -140,7 +143,18 @@ bool formatSuitsSlot(TextureFormat format, MapSlot slot) {
 std::vector<TextureFormat> formatsForSlot(MapSlot slot) {
   std::vector<TextureFormat> formats;
   for (const TextureFormatInfo& info : allTextureFormats()) {
-    if (formatSuitsSlot(info.format, slot))
+    if (formatSuitsSlot(info.format, slot) && !isHalfFloatFormat(info.format))
+      formats.push_back(info.format);
+  }
+  return formats;
+}
+
+std::vector<TextureFormat> formatsForMap(const Image& map, MapSlot slot) {
+  std::vector<TextureFormat> formats = formatsForSlot(slot);
+  if (map.sourceBitsPerChannel() < 16 || map.colorSpace() == ColorSpace::Srgb)
+    return formats;
+  for (const TextureFormatInfo& info : allTextureFormats()) {
+    if (isHalfFloatFormat(info.format) && formatSuitsSlot(info.format, slot))
       formats.push_back(info.format);
   }
   return formats;
@@ -161,6 +175,39 @@ double shareOutsideUnitRange(const Image& map) {
   return map.valueCount() ? double(outside) / double(map.valueCount()) : 0.0;
 }
 
+HalfFloatClamps countHalfFloatClamps(const Image& map, bool signedFormat) {
+  HalfFloatClamps clamps;
+  const float* values = map.data();
+  for (std::size_t i = 0; i < map.valueCount(); ++i) {
+    const float value = values[i];
+    if (std::isnan(value))
+      ++clamps.notANumber;
+    else if (std::isinf(value))
+      ++clamps.infinite;
+    else if (std::abs(value) > kMaxHalf)
+      ++clamps.beyondHalf;
+    else if (!signedFormat && value < 0.0f)
+      ++clamps.negative;
+  }
+  return clamps;
+}
+
+std::string describeHalfFloatClamps(const HalfFloatClamps& clamps, TextureFormat format) {
+  std::string text;
+  const auto add = [&text](std::size_t count, const std::string& what) {
+    if (count == 0)
+      return;
+    text += (text.empty() ? "" : "; ") + std::to_string(count) + " " + what;
+  };
+  add(clamps.notANumber, "values are not numbers and become 0");
+  add(clamps.infinite, "values are infinite and become the largest half (65504)");
+  add(clamps.beyondHalf, "values lie beyond the largest half and become 65504");
+  add(clamps.negative, "values are negative and become 0 (" +
+                           std::string(textureFormatInfo(format).label) +
+                           " stores none; bc6h-signed does)");
+  return text;
+}
+
 MapSlot likelySlot(TextureFormat format) {
   switch (textureFormatInfo(format).layout) {
     case FormatLayout::R:
@@ -170,6 +217,7 @@ MapSlot likelySlot(TextureFormat format) {
       return MapSlot::Normal;
     case FormatLayout::Rgb:
     case FormatLayout::Rgba:
+    case FormatLayout::RgbHalf:  // an HDR image: colour, linear (decodeAsMap)
       return MapSlot::Color;
   }
   return MapSlot::Color;  // not reached: every layout is handled above
@@ -238,9 +286,13 @@ Result<CompressedTexture> compressMap(const Image& map, MapSlot slot,
   texture.sourceChannels = map.channels();
   texture.srgb = slot == MapSlot::Color && textureFormatInfo(settings.format).srgbVkFormat != 0;
 
-  // Level 0 is the map itself (not copied: a 4096^2 float map is 200 MB).
+  // Level 0 is the map itself (not copied: a 4096^2 float map is 200 MB). Half floats hold
+  // linear colour (formatMapProblem refuses sRGB), so its mips average as data does, without
+  // the sRGB round trip and its clamp to 0..1.
+  const MapSlot filterSlot =
+      isHalfFloatFormat(settings.format) && slot == MapSlot::Color ? MapSlot::Height : slot;
   Result<std::vector<Image>> levels =
-      shippedMipLevels(map, slot, shippedMipChain(settings), spreadNormals);
+      shippedMipLevels(map, filterSlot, shippedMipChain(settings), spreadNormals);
   if (!levels)
     return makeError(levels.error());
   const std::vector<Image>& smaller = levels.value();
@@ -317,8 +369,10 @@ Result<Image> decodeAsMap(const CompressedTexture& texture, int levelIndex) {
   const int channels = slot == MapSlot::Color    ? std::clamp(texture.sourceChannels, 3, 4)
                        : slot == MapSlot::Normal ? 3
                                                  : 1;
-  Image map(rgba->width(), rgba->height(), channels, mapSlotColorSpace(slot));
-  map.setSourceBitsPerChannel(8);
+  const bool halfFloat = isHalfFloatFormat(texture.format);
+  Image map(rgba->width(), rgba->height(), channels,
+            halfFloat ? ColorSpace::Linear : mapSlotColorSpace(slot));
+  map.setSourceBitsPerChannel(halfFloat ? 16 : 8);
   for (std::size_t p = 0; p < map.pixelCount(); ++p) {
     const float* in = rgba->data() + p * 4;
     float* out = map.data() + p * std::size_t(channels);

@@ -12,6 +12,7 @@
 #include "core/material/MapSlot.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace relief::core::inline compression {
@@ -61,11 +62,29 @@ Result<Image> decodeAsMap(const CompressedTexture& texture, int level = 0);
 
 // Whether the format can hold a map of this slot, and which formats "compare all" tries.
 bool formatSuitsSlot(TextureFormat format, MapSlot slot);
-std::vector<TextureFormat> formatsForSlot(MapSlot slot);
+std::vector<TextureFormat> formatsForSlot(MapSlot slot);  // without the half-float formats
+// What "compare all" and the Compress panel offer for a map: formatsForSlot, and the half-float
+// formats too for a linear map of 16 or 32 bits per channel (float heights, HDR colour), whose
+// steps and range 8-bit formats cannot keep.
+std::vector<TextureFormat> formatsForMap(const Image& map, MapSlot slot);
 
 // The share of values outside 0..1 (float maps such as EXR heights): every GPU format here
 // stores 0..1, so they are clamped. 0 when none.
 double shareOutsideUnitRange(const Image& map);
+
+// What a half-float format (BC6H) cannot store, counted in a map's values: the encoder makes
+// not-a-number 0, infinities and values beyond the largest half (65504) that half, and in the
+// unsigned format negatives 0.
+struct HalfFloatClamps {
+  std::size_t notANumber = 0;
+  std::size_t infinite = 0;
+  std::size_t beyondHalf = 0;
+  std::size_t negative = 0;  // unsigned format only
+  std::size_t total() const { return notANumber + infinite + beyondHalf + negative; }
+};
+HalfFloatClamps countHalfFloatClamps(const Image& map, bool signedFormat);
+// "3 values are not numbers and become 0; ..." for a warning; empty when nothing is clamped.
+std::string describeHalfFloatClamps(const HalfFloatClamps& clamps, TextureFormat format);
 
 // For files that do not say what map they hold: what a format's layout suggests (a normal for
 // the two-channel formats, a height for one channel, colour otherwise).

@@ -22,8 +22,9 @@ constexpr std::uint32_t kFourCCFlag = 0x4, kNormalFlag = 0x80000000u;
 constexpr std::uint32_t kCapsComplex = 0x8, kCapsTexture = 0x1000, kCapsMipMap = 0x400000;
 
 // The format a DXGI_FORMAT code names: the table's UNORM and sRGB codes, and the TYPELESS code
-// that precedes the UNORM one for every BC format (BC1 70, ..., BC7 97). DXT5nm shares BC3's
-// codes, and BC3 comes first in the table.
+// that precedes the UNORM one for every BC format (BC1 70, ..., BC7 97; BC6H's 94 precedes
+// UF16 95, and SF16 96 follows). DXT5nm shares BC3's codes, and BC3 comes first in the table;
+// BC6H (unsigned) comes before its signed form, so 95 is never read as SF16's "typeless".
 std::optional<TextureFormat> formatForDxgi(std::uint32_t code, bool& srgb) {
   for (const TextureFormatInfo& info : allTextureFormats()) {
     if (info.dxgiFormat == 0)

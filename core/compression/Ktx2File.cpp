@@ -30,6 +30,9 @@ constexpr std::size_t kHeaderEnd = 12 + 9 * 4 + 4 * 4 + 2 * 8;  // identifier, h
 // table, TextureFormat.cpp).
 constexpr std::uint32_t kChannelColorBc = 0, kChannelRed = 0, kChannelGreen = 1,
                         kChannelEtc2Color = 2, kChannelAlpha = 15;
+// Sample qualifiers (the top bits of the channel byte) and the float limits BC6H's sample uses.
+constexpr std::uint32_t kQualifierFloat = 0x80, kQualifierSigned = 0x40;
+constexpr std::uint32_t kFloatOne = 0x3F800000u, kFloatMinusOne = 0xBF800000u;
 constexpr std::uint32_t kPrimariesBt709 = 1, kTransferLinear = 1, kTransferSrgb = 2;
 constexpr std::string_view kSlotKey = "ReliefMapSlot", kChannelsKey = "ReliefSourceChannels";
 constexpr std::string_view kSwizzleKey = "KTXswizzle", kNormalAgSwizzle = "ag01";
@@ -93,11 +96,17 @@ std::vector<std::uint8_t> dataFormatDescriptor(const CompressedTexture& texture)
   out.u32(std::uint32_t(info.blockWidth - 1) | std::uint32_t(info.blockHeight - 1) << 8);
   out.u32(std::uint32_t(info.bytesPerBlock));  // bytesPlane0
   out.u32(0);                                  // bytesPlane4..7
+  // BC6H's sample is flagged float (and signed for its signed form), and its limits are the
+  // floats -1 or 0 and 1, as the specification's BC6H example gives them.
+  const bool halfFloat = isHalfFloatFormat(texture.format);
+  const bool isSigned = texture.format == TextureFormat::Bc6hSigned;
+  const std::uint32_t qualifiers =
+      (halfFloat ? kQualifierFloat : 0u) | (isSigned ? kQualifierSigned : 0u);
   for (const Sample& sample : blockSamples) {
-    out.u32(sample.bitOffset | (sampleBits - 1) << 16 | sample.channel << 24);
-    out.u32(0);            // sample position 0, 0, 0, 0
-    out.u32(0);            // sampleLower
-    out.u32(0xFFFFFFFFu);  // sampleUpper
+    out.u32(sample.bitOffset | (sampleBits - 1) << 16 | (sample.channel | qualifiers) << 24);
+    out.u32(0);                                                  // sample position 0, 0, 0, 0
+    out.u32(halfFloat ? (isSigned ? kFloatMinusOne : 0u) : 0u);  // sampleLower
+    out.u32(halfFloat ? kFloatOne : 0xFFFFFFFFu);                // sampleUpper
   }
   return std::move(out.data());
 }

@@ -31,6 +31,11 @@ constexpr std::array<TextureFormatInfo, kTextureFormatCount> kFormats = {{
      130, Ktx2Samples::AlphaThenColour},
     {TextureFormat::Bc7, "bc7", "BC7 (BPTC)", FormatFamily::Bc, GpuFeature::Bptc, 4, 4, 16,
      FormatLayout::Rgba, 145, 146, 0, 98, 99, 0x8E8C, 0x8E8D, 134, Ktx2Samples::Whole},
+    {TextureFormat::Bc6h, "bc6h", "BC6H (BPTC float)", FormatFamily::Bc, GpuFeature::Bptc, 4, 4, 16,
+     FormatLayout::RgbHalf, 143, 0, 0, 95, 0, 0x8E8F, 0, 133, Ktx2Samples::Whole},
+    {TextureFormat::Bc6hSigned, "bc6h-signed", "BC6H signed (BPTC float)", FormatFamily::Bc,
+     GpuFeature::Bptc, 4, 4, 16, FormatLayout::RgbHalf, 144, 0, 0, 96, 0, 0x8E8E, 0, 133,
+     Ktx2Samples::Whole},
     {TextureFormat::Etc1, "etc1", "ETC1", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
      FormatLayout::Rgb, 147, 148, 0, 0, 0, 0x9274, 0x9275, 161, Ktx2Samples::EtcColour},
     {TextureFormat::Etc2, "etc2", "ETC2 RGB", FormatFamily::Etc, GpuFeature::Etc2Eac, 4, 4, 8,
@@ -128,6 +133,10 @@ bool isSingleChannelFormat(TextureFormat format) {
 
 bool isAstc(TextureFormat format) {
   return textureFormatInfo(format).family == FormatFamily::Astc;
+}
+
+bool isHalfFloatFormat(TextureFormat format) {
+  return textureFormatInfo(format).layout == FormatLayout::RgbHalf;
 }
 
 bool isBcFamily(TextureFormat format) {

@@ -16,18 +16,20 @@
 namespace relief::core::inline compression {
 
 enum class TextureFormat {
-  Bc1,      // DXT1: RGB 5:6:5 endpoints, 2-bit indices (alpha 1)
-  Bc2,      // DXT3: BC1 colour + explicit 4-bit alpha
-  Bc3,      // DXT5: BC1 colour + interpolated alpha
-  Bc4,      // ATI1/RGTC1: one channel, interpolated like BC3 alpha
-  Bc5,      // ATI2/3Dc/RGTC2: two BC4 channels (normal X, Y; Z rebuilt)
-  Dxt5nm,   // BC3 with normal X in alpha and Y in green (reference 003's fallback)
-  Bc7,      // BPTC: RGBA in eight block modes with up to three partitioned subsets
-  Etc1,     // ETC1: RGB; a valid ETC2 RGB stream
-  Etc2,     // ETC2 RGB
-  Etc2A,    // ETC2 RGBA: EAC alpha block + ETC2 colour block
-  EacR11,   // EAC R11: one channel, 11-bit
-  EacRg11,  // EAC RG11: two channels (normal X, Y; Z rebuilt)
+  Bc1,         // DXT1: RGB 5:6:5 endpoints, 2-bit indices (alpha 1)
+  Bc2,         // DXT3: BC1 colour + explicit 4-bit alpha
+  Bc3,         // DXT5: BC1 colour + interpolated alpha
+  Bc4,         // ATI1/RGTC1: one channel, interpolated like BC3 alpha
+  Bc5,         // ATI2/3Dc/RGTC2: two BC4 channels (normal X, Y; Z rebuilt)
+  Dxt5nm,      // BC3 with normal X in alpha and Y in green (reference 003's fallback)
+  Bc7,         // BPTC: RGBA in eight block modes with up to three partitioned subsets
+  Bc6h,        // BPTC float: RGB half floats, unsigned (HDR colour, environments, float maps)
+  Bc6hSigned,  // BPTC float: RGB half floats with sign
+  Etc1,        // ETC1: RGB; a valid ETC2 RGB stream
+  Etc2,        // ETC2 RGB
+  Etc2A,       // ETC2 RGBA: EAC alpha block + ETC2 colour block
+  EacR11,      // EAC R11: one channel, 11-bit
+  EacRg11,     // EAC RG11: two channels (normal X, Y; Z rebuilt)
   Astc4x4,
   Astc5x5,
   Astc6x6,
@@ -50,6 +52,7 @@ enum class FormatLayout {
   R,         // one channel in red (height, AO, roughness)
   NormalRg,  // normal X, Y in red, green; Z = sqrt(1 - x^2 - y^2) (reference 003 eq. 2.1)
   NormalAg,  // normal X in alpha, Y in green (DXT5nm)
+  RgbHalf,   // RGB half floats (BC6H): linear values beyond 0..1, a single value in all three
 };
 
 enum class CompressionQuality { Fast, Normal, Best };
@@ -138,6 +141,9 @@ double bitsPerPixel(TextureFormat format);
 bool isTwoChannelNormalFormat(TextureFormat format);  // BC5, DXT5nm, EAC RG11
 bool isSingleChannelFormat(TextureFormat format);     // BC4, EAC R11
 bool isAstc(TextureFormat format);
+// BC6H and its signed form: half floats, judged in float (CompressionMetrics.h: HdrMetrics),
+// fed linear values that are not clamped to 0..1, and offered for float maps only.
+bool isHalfFloatFormat(TextureFormat format);
 bool isBcFamily(TextureFormat format);
 
 constexpr std::uint32_t makeFourCC(char a, char b, char c, char d) {

@@ -91,7 +91,16 @@ TEST(TextureFormatTest, RatesAndCodesMatchTheSpecifications) {
   EXPECT_EQ(textureFormatInfo(TextureFormat::Bc7).srgbDxgiFormat, 99u);
   EXPECT_EQ(textureFormatInfo(TextureFormat::Bc7).glFormat, 0x8E8Cu);
   EXPECT_DOUBLE_EQ(bitsPerPixel(TextureFormat::Bc7), 8.0);
-  EXPECT_FALSE(findTextureFormat("bc6h").has_value());
+  // BC6H: BC6H_UFLOAT/SFLOAT_BLOCK 143/144, DXGI_FORMAT_BC6H_UF16/SF16 95/96,
+  // GL_COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT/SIGNED_FLOAT 0x8E8F/0x8E8E; no sRGB forms.
+  EXPECT_EQ(findTextureFormat("bc6h"), TextureFormat::Bc6h);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc6h).vkFormat, 143u);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc6hSigned).vkFormat, 144u);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc6h).dxgiFormat, 95u);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc6hSigned).dxgiFormat, 96u);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc6h).glFormat, 0x8E8Fu);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc6hSigned).glFormat, 0x8E8Eu);
+  EXPECT_EQ(textureFormatInfo(TextureFormat::Bc6h).srgbVkFormat, 0u);
 }
 
 TEST(TextureFormatTest, SlotsGetTheFormatsThatCanHoldThem) {

@@ -343,12 +343,22 @@ TEST(Ktx2FileTest, EveryFormatRoundTripsWithItsDescriptor) {
     EXPECT_EQ(back->levels.size(), texture.levels.size());
     EXPECT_EQ(back->levels.back().data, texture.levels.back().data);
     // Two planes of 64 bits for the formats that pair two blocks: BC2/BC3, BC5, ETC2 RGBA, RG11;
-    // ASTC and BC7 blocks are one 128-bit sample.
+    // ASTC, BC6H and BC7 blocks are one 128-bit sample.
     const std::uint32_t dfd = u32At(bytes, 48);
     const std::uint32_t samples = ((u32At(bytes, dfd + 8) >> 16) - 24) / 16;
-    const bool oneBlock = isAstc(info.format) || info.format == TextureFormat::Bc7;
+    const bool oneBlock =
+        isAstc(info.format) || info.format == TextureFormat::Bc7 || isHalfFloatFormat(info.format);
     EXPECT_EQ(samples, info.bytesPerBlock == 16 && !oneBlock ? 2u : 1u) << info.name;
     EXPECT_EQ(u32At(bytes, dfd + 20), std::uint32_t(info.bytesPerBlock)) << info.name;
+    // BC6H's sample is float (0x80 in the channel byte), signed (0x40) in its signed form, with
+    // the float limits 0 or -1 and 1 (Khronos Data Format 1.3, BC6H).
+    if (isHalfFloatFormat(info.format)) {
+      const std::uint32_t channel = u32At(bytes, dfd + 28) >> 24;
+      const bool isSigned = info.format == TextureFormat::Bc6hSigned;
+      EXPECT_EQ(channel, isSigned ? 0xC0u : 0x80u) << info.name;
+      EXPECT_EQ(u32At(bytes, dfd + 36), isSigned ? 0xBF800000u : 0u) << info.name;
+      EXPECT_EQ(u32At(bytes, dfd + 40), 0x3F800000u) << info.name;
+    }
   }
 }
 
