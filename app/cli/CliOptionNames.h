@@ -54,6 +54,7 @@ inline const QString kPreset = QStringLiteral("preset");
 inline const QString kQuality = QStringLiteral("quality");
 inline const QString kRaw = QStringLiteral("raw");
 inline const QString kRdo = QStringLiteral("rdo");
+inline const QString kAllow8Bit = QStringLiteral("allow-8bit");
 inline const QString kRecut = QStringLiteral("recut");
 inline const QString kRepeats = QStringLiteral("repeats");
 inline const QString kSeams = QStringLiteral("seams");

@@ -77,8 +77,9 @@ CliOptions compressOptions() {
       {option::kIn, QStringLiteral("file"), QStringLiteral("The map."), {}},
       {option::kFormat, QStringLiteral("format"), formatNames(), {}},
       {option::kQuality, QStringLiteral("quality"),
-       QStringLiteral("fast|normal|best: the search depth of Relief's BC, ETC2 and EAC encoders; "
-                      "astcenc's fast, medium and thorough presets."),
+       QStringLiteral("fast|normal|best: the search depth of Relief's BC, ETC2 and EAC encoders "
+                      "(BC6H: 2, 6 or all 32 partitions tried); astcenc's fast, medium and "
+                      "thorough presets."),
        QStringLiteral("normal")},
       {option::kMips,
        {},
@@ -112,6 +113,12 @@ CliOptions compressOptions() {
                       "less than lambda times the bits it saves. 0 is off (the encoder's blocks "
                       "bit for bit); 1-10 is mild, 50 and up strong. Use with --zstd."),
        QStringLiteral("0")},
+      {option::kAllow8Bit,
+       {},
+       QStringLiteral("BC6H: take an 8-bit map anyway, its 0..1 values stored as half floats "
+                      "(BC6H is for EXR, HDR and 16-bit float maps; 8-bit maps are refused "
+                      "without this)."),
+       {}},
       {option::kPerceptual,
        {},
        QStringLiteral("BC1-BC3 colour: weigh the error by luminance (Rec. 709) instead of "
@@ -276,10 +283,19 @@ std::optional<int> buildJob(const QCommandLineParser& parser, core::CompressionJ
   }
   job.heightScale = *heightScale;
   job.measure = parser.isSet(option::kMetrics);
+  job.acceptIntegerMaps = parser.isSet(option::kAllow8Bit);
   if (const std::string problem = core::formatSlotProblem(*format, job.slot); !problem.empty()) {
     printError(QString::fromStdString(inPath + ": " + problem) +
                QStringLiteral("; pass --normal or --height if the map is one, or choose another "
                               "format"));
+    return kExitUsage;
+  }
+  if (const std::string problem = core::formatMapProblem(*job.map, *format, job.acceptIntegerMaps);
+      !problem.empty()) {
+    printError(QString::fromStdString(inPath + ": " + problem) +
+               (job.map->sourceBitsPerChannel() == 8
+                    ? QStringLiteral("; pass --allow-8bit to store it anyway")
+                    : QString()));
     return kExitUsage;
   }
   return std::nullopt;

@@ -5,6 +5,7 @@
 #include "core/compression/MipChain.h"
 #include "core/compression/TextureFile.h"
 #include "core/image/ImageIO.h"
+#include "core/shading/EnvironmentMaps.h"
 #include "support/ImageCompare.h"
 #include "support/TestPaths.h"
 
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -935,6 +937,56 @@ TEST(Cli, CompressRdoTradesQualityForSize) {
   }
 }
 
+// BC6H from an EXR: the studio environment (13 stops) written as a float EXR, compressed into
+// KTX2 and DDS; the metrics judge it in float (exposure PSNR, log2 error) and the files decode
+// as BC6H. A NaN in the input is clamped with a warning naming the file. An 8-bit map is refused
+// with exit 2 and nothing written unless --allow-8bit; --rdo with BC6H is refused too.
+TEST(Cli, CompressBc6hFromExr) {
+  const std::string folder = scratchFolder();
+  core::Image studio = core::makeBuiltInEnvironment(core::BuiltInEnvironment::Studio, 64);
+  studio.at(3, 3, 0) = std::numeric_limits<float>::quiet_NaN();
+  studio.setSourceBitsPerChannel(32);
+  ASSERT_TRUE(core::saveImage(studio, folder + "/studio.exr"));
+  const QString in = q(folder + "/studio.exr");
+  CliRun run = runCli({"compress", "--in", in, "--format", "bc6h", "--zstd", "19", "--mips",
+                       "--out", q(folder + "/studio.ktx2"), "--metrics", "json"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.err.find("studio.exr"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("not numbers"), std::string::npos) << run.err;
+  const QJsonObject hdr = QJsonDocument::fromJson(QByteArray::fromStdString(run.out))
+                              .object()
+                              .value(QStringLiteral("hdr"))
+                              .toObject();
+  EXPECT_GT(hdr.value(QStringLiteral("exposurePsnr")).toDouble(), 40.0) << run.out;
+  EXPECT_LT(hdr.value(QStringLiteral("meanLog2Error")).toDouble(), 0.05) << run.out;
+  for (const char* file : {"/studio.ktx2", "/studio.dds"}) {
+    if (std::string(file) == "/studio.dds") {
+      CliRun dds =
+          runCli({"compress", "--in", in, "--format", "bc6h-signed", "--out", q(folder + file)});
+      ASSERT_EQ(dds.exitCode, 0) << dds.err;
+    }
+    core::Result<core::CompressedTexture> texture = core::loadCompressedTexture(folder + file);
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    EXPECT_TRUE(core::isHalfFloatFormat(texture->format)) << file;
+  }
+
+  core::Image grey(16, 16, 1);
+  ASSERT_TRUE(core::saveImage(grey, folder + "/grey.png"));
+  CliRun eightBit = runCli({"compress", "--in", q(folder + "/grey.png"), "--format", "bc6h",
+                            "--height", "--out", q(folder + "/grey.ktx2")});
+  EXPECT_EQ(eightBit.exitCode, 2) << eightBit.err;
+  EXPECT_NE(eightBit.err.find("grey.png"), std::string::npos) << eightBit.err;
+  EXPECT_NE(eightBit.err.find("8-bit"), std::string::npos) << eightBit.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/grey.ktx2"));
+  CliRun allowed = runCli({"compress", "--in", q(folder + "/grey.png"), "--format", "bc6h",
+                           "--height", "--allow-8bit", "--out", q(folder + "/grey.ktx2")});
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
+  CliRun rdo = runCli({"compress", "--in", in, "--format", "bc6h", "--zstd", "19", "--rdo", "8",
+                       "--out", q(folder + "/rdo.ktx2")});
+  EXPECT_EQ(rdo.exitCode, 2) << rdo.err;
+  EXPECT_NE(rdo.err.find("--rdo"), std::string::npos) << rdo.err;
+}
+
 TEST(Cli, CompressKeepsAlphaCoverage) {
   const std::string folder = scratchFolder();
   core::Image leaves(512, 512, 4);
@@ -1576,9 +1628,12 @@ TEST(Cli, CompressDecodeAndCompareRefuseBadInput) {
     return runCli({QStringLiteral("compress"), QStringLiteral("--in"), q(colour),
                    QStringLiteral("--format"), format, QStringLiteral("--out"), q(out)});
   };
-  CliRun unknown = compress(QStringLiteral("bc6h"), folder + "/x.dds");
+  CliRun unknown = compress(QStringLiteral("bc9"), folder + "/x.dds");
   EXPECT_EQ(unknown.exitCode, 2);
-  EXPECT_NE(unknown.err.find("bc6h"), std::string::npos);
+  EXPECT_NE(unknown.err.find("bc9"), std::string::npos);
+  CliRun eightBitHdr = compress(QStringLiteral("bc6h"), folder + "/x.dds");
+  EXPECT_EQ(eightBitHdr.exitCode, 2);
+  EXPECT_NE(eightBitHdr.err.find("8-bit"), std::string::npos) << eightBitHdr.err;
   CliRun etcInDds = compress(QStringLiteral("etc2"), folder + "/x.dds");
   EXPECT_EQ(etcInDds.exitCode, 2);
   EXPECT_NE(etcInDds.err.find(".ktx2"), std::string::npos) << etcInDds.err;
