@@ -2,6 +2,8 @@
 #include "core/shading/EnvironmentMaps.h"
 
 #include "core/base/ParallelFor.h"
+#include "core/compression/Compressor.h"
+#include "core/compression/TextureFile.h"
 #include "core/generators/ImageFilters.h"
 #include "core/image/ImageIO.h"
 
@@ -192,7 +194,40 @@ Image makeBuiltInEnvironment(BuiltInEnvironment environment, int height) {
   return makeEquirect(height, [](const glm::vec3&) { return glm::vec3(1.0f); });
 }
 
+namespace {
+
+// A BC6H texture (KTX2 or DDS) as radiance: level 0 decoded. Other block formats hold 0..1
+// and are refused as 8-bit files are.
+Result<Image> loadCompressedEnvironment(const std::string& path) {
+  Result<CompressedTexture> texture = loadCompressedTexture(path);
+  if (!texture)
+    return makeError(texture.error());
+  const TextureFormatInfo& info = textureFormatInfo(texture->format);
+  if (!isHalfFloatFormat(texture->format)) {
+    return makeError(path + ": " + std::string(info.label) +
+                     " holds no radiance above 1; an environment texture must be BC6H");
+  }
+  const CompressedLevel& base = texture->levels.front();
+  if (std::abs(base.width - 2 * base.height) > 2) {
+    return makeError(path + ": " + std::to_string(base.width) + "x" + std::to_string(base.height) +
+                     " is not an equirectangular (latitude-longitude) map, which is twice as "
+                     "wide as it is tall");
+  }
+  Result<Image> decoded = decodeLevel(texture.value(), 0);
+  if (!decoded)
+    return makeError(path + ": " + decoded.error());
+  return toRadiance(decoded.value());
+}
+
+}  // namespace
+
 Result<Image> loadEnvironmentFile(const std::string& path) {
+  if (containerForPath(path)) {
+    Result<Image> radiance = loadCompressedEnvironment(path);
+    if (radiance && radiance->width() > kEnvironmentWorkingWidth)
+      return resizeImage(radiance.value(), kEnvironmentWorkingWidth, kEnvironmentWorkingWidth / 2);
+    return radiance;
+  }
   const Result<ImageFileInfo> info = readImageInfo(path);
   if (!info)
     return makeError(info.error());

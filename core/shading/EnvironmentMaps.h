@@ -5,7 +5,8 @@
 //
 // Built-ins are made in code, so nothing is downloaded: a studio (dark walls, three soft boxes),
 // an overcast sky (the CIE standard overcast sky over a grey ground) and a uniform white of
-// radiance 1 (the white furnace). Files are EXR or Radiance HDR, through OpenImageIO.
+// radiance 1 (the white furnace). Files are EXR or Radiance HDR, through OpenImageIO, or BC6H
+// textures (the environment as it ships compressed: EnvironmentPanel saves one).
 #pragma once
 
 #include "core/base/Result.h"
@@ -42,10 +43,11 @@ glm::vec3 equirectDirection(const glm::vec2& uv);
 // The built-in at `height` rows (twice as many columns): four channels, linear radiance.
 Image makeBuiltInEnvironment(BuiltInEnvironment environment, int height);
 
-// An EXR or Radiance HDR file as four channels of linear radiance: refused with a message
-// naming the file when it cannot be read, is not floating point (an 8-bit image holds no
-// radiance above 1), is not twice as wide as it is tall, or is wider than kMaxEnvironmentWidth.
-// Values that are not finite or are negative become 0; grey files become RGB.
+// An EXR or Radiance HDR file, or a BC6H texture (KTX2 or DDS: level 0, as a GPU would light
+// with it), as four channels of linear radiance: refused with a message naming the file when it
+// cannot be read, is not floating point (an 8-bit image or block format holds no radiance above
+// 1), is not twice as wide as it is tall, or is wider than kMaxEnvironmentWidth. Values that are
+// not finite or are negative become 0; grey files become RGB.
 Result<Image> loadEnvironmentFile(const std::string& path);
 
 // A built-in's name or a file's path to its radiance image. Kept for the process (built-ins, and

@@ -170,14 +170,16 @@ void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Ima
               .arg(mipmaps ? tr("with the full mip chain (a third more)") : tr("level 0 alone"))
               .arg(zstdLevel > 0 ? tr(", levels supercompressed with Zstandard") : ""));
   m_table->horizontalHeaderItem(QualityColumn)
-      ->setText(slot == core::MapSlot::Normal ? tr("Mean angle (°)") : tr("PSNR (dB)"));
+      ->setText(slot == core::MapSlot::Normal ? tr("Mean angle (°)")
+                : core::isHdrMap(*map, slot)  ? tr("Exposure PSNR (dB)")
+                                              : tr("PSNR (dB)"));
   m_table->horizontalHeaderItem(DetailColumn)
       ->setText(slot == core::MapSlot::Normal   ? tr("p99 angle, share > 2°")
                 : slot == core::MapSlot::Height ? tr("Parallax shift (texels)")
                                                 : tr("Max error"));
   m_zstdLevel = zstdLevel;
   std::vector<core::CompressionJob> jobs;
-  for (core::TextureFormat format : core::formatsForSlot(slot)) {
+  for (core::TextureFormat format : core::formatsForMap(*map, slot)) {
     jobs.push_back({map, slot, {format, quality, mipmaps, zstdLevel}, heightScale});
     // Under Zstandard, the formats with RDO get a row per trade too: the size-quality curve.
     if (zstdLevel > 0 && core::formatHasRdo(format)) {

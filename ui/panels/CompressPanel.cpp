@@ -21,6 +21,7 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStandardItemModel>
 #include <QTableWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -83,6 +84,16 @@ QGridLayout* CompressPanel::formatGrid() {
       row.format->addItem(
           tr("%1 — %2 bpp").arg(toQString(info.label)).arg(core::bitsPerPixel(format), 0, 'g', 3),
           int(format));
+    }
+    // Half floats (BC6H) for the slots that take them, enabled for float maps only
+    // (syncFromDocument: core::formatsForMap).
+    for (const core::TextureFormatInfo& info : core::allTextureFormats()) {
+      if (core::isHalfFloatFormat(info.format) && core::formatSuitsSlot(info.format, slot)) {
+        row.format->addItem(tr("%1 — %2 bpp, float maps")
+                                .arg(toQString(info.label))
+                                .arg(core::bitsPerPixel(info.format), 0, 'g', 3),
+                            int(info.format));
+      }
     }
     row.format->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     row.format->setMinimumContentsLength(10);
@@ -406,6 +417,29 @@ CompressPanel::~CompressPanel() {
   m_runner->waitForFinished();
 }
 
+// A half-float item is enabled only for a map it can take (a linear map of 16 or 32 bits per
+// channel); its tooltip says why otherwise.
+void CompressPanel::enableFloatFormats(QComboBox* box,
+                                       const std::shared_ptr<const core::Image>& map,
+                                       core::MapSlot slot) {
+  auto* model = qobject_cast<QStandardItemModel*>(box->model());
+  if (!model)
+    return;
+  const std::vector<core::TextureFormat> offered =
+      map ? core::formatsForMap(*map, slot) : std::vector<core::TextureFormat>{};
+  for (int i = 0; i < box->count(); ++i) {
+    const int item = box->itemData(i).toInt();
+    if (item == kUncompressed || !core::isHalfFloatFormat(core::TextureFormat(item)))
+      continue;
+    const bool usable =
+        std::find(offered.begin(), offered.end(), core::TextureFormat(item)) != offered.end();
+    model->item(i)->setEnabled(usable);
+    model->item(i)->setToolTip(usable ? tr("Half floats: values beyond 0..1 and fine steps kept")
+                                      : tr("For EXR, HDR and 16-bit float maps (linear); this "
+                                           "map is 8-bit or sRGB"));
+  }
+}
+
 void CompressPanel::syncFromDocument() {
   m_syncing = true;
   for (core::MapSlot slot : core::kAllMapSlots) {
@@ -414,6 +448,8 @@ void CompressPanel::syncFromDocument() {
     row.label->setEnabled(present);
     row.format->setEnabled(present);
     row.quality->setEnabled(present);
+    enableFloatFormats(row.format, present ? m_document->material().map(slot).image : nullptr,
+                       slot);
     const core::MapCompression& choice = m_document->compression(slot);
     const int formatIndex = row.format->findData(choice ? int(choice->format) : kUncompressed);
     row.format->setCurrentIndex(std::max(0, formatIndex));

@@ -82,6 +82,8 @@ class CompressPanel : public QWidget {
 
   void showFinished(const std::vector<core::CompressionOutcome>& outcomes);
   void syncFromDocument();
+  void enableFloatFormats(QComboBox* box, const std::shared_ptr<const core::Image>& map,
+                          core::MapSlot slot);
   void writeChoice(core::MapSlot slot);
   void writeMipChain();
   void writeRdo();

@@ -1,6 +1,9 @@
 // EnvironmentPanel; see EnvironmentPanel.h.
 #include "ui/panels/EnvironmentPanel.h"
 
+#include "core/compression/CompressionMetrics.h"
+#include "core/compression/Compressor.h"
+#include "core/compression/TextureFile.h"
 #include "core/shading/EnvironmentMaps.h"
 #include "ui/QtText.h"
 #include "ui/document/ViewDocument.h"
@@ -9,10 +12,13 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QLabel>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSignalBlocker>
 
 #include <cmath>
@@ -40,7 +46,9 @@ EnvironmentPanel::EnvironmentPanel(ViewDocument* view, QWidget* parent)
       m_source(new QComboBox),
       m_intensity(new QDoubleSpinBox),
       m_rotation(new ParameterSlider(rotationSpec())),
-      m_background(new QComboBox) {
+      m_background(new QComboBox),
+      m_saveCompressed(new QPushButton(tr("Save as BC6H…"))),
+      m_compressedNote(new QLabel) {
   auto* form = new QFormLayout(this);
   form->setContentsMargins(0, 0, 0, 0);
   for (core::BuiltInEnvironment environment : core::allBuiltInEnvironments()) {
@@ -66,6 +74,19 @@ EnvironmentPanel::EnvironmentPanel(ViewDocument* view, QWidget* parent)
   form->addRow(tr("Intensity"), m_intensity);
   form->addRow(tr("Rotation"), m_rotation);
   form->addRow(tr("Background"), m_background);
+  m_saveCompressed->setObjectName(QStringLiteral("saveEnvironmentBc6h"));
+  m_saveCompressed->setToolTip(
+      tr("Compress the environment into BC6H (half floats, 8 bits per texel: what desktop "
+         "engines ship HDR environments as), save it as KTX2 or DDS, and light the material "
+         "with it, to see what the compression costs. Undo returns to the original."));
+  m_compressedNote->setWordWrap(true);
+  m_compressedNote->setVisible(false);
+  form->addRow(QString(), m_saveCompressed);
+  form->addRow(QString(), m_compressedNote);
+  connect(m_saveCompressed, &QPushButton::clicked, this, &EnvironmentPanel::chooseCompressedPath);
+  // A newer load or save replaces a running save: the button comes back either way.
+  connect(m_loader, &BackgroundTask::cancelled, this,
+          [this] { m_saveCompressed->setEnabled(true); });
 
   connect(m_source, &QComboBox::activated, this, &EnvironmentPanel::sourceChosen);
   m_intensity->setKeyboardTracking(false);  // a typed value is one edit, applied on Enter
@@ -125,7 +146,8 @@ void EnvironmentPanel::sourceChosen(int index) {
 
 void EnvironmentPanel::chooseFile() {
   const QString path = QFileDialog::getOpenFileName(
-      this, tr("Load environment"), QString(), tr("HDR environments (*.exr *.hdr);;All files (*)"));
+      this, tr("Load environment"), QString(),
+      tr("HDR environments (*.exr *.hdr *.ktx2 *.dds);;All files (*)"));
   if (!path.isEmpty())
     loadFile(path);
 }
@@ -147,6 +169,84 @@ void EnvironmentPanel::loadFile(const QString& path) {
         environment.source = path.toStdString();
         m_view->setEnvironment(environment);
         Q_EMIT fileLoaded(true, QString());
+      });
+}
+
+void EnvironmentPanel::chooseCompressedPath() {
+  const QString source = QString::fromStdString(m_view->environment().source);
+  const QString suggested = QFileInfo(source).completeBaseName() + QStringLiteral("_bc6h.ktx2");
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save environment as BC6H"), suggested,
+                                                    tr("KTX2, Zstandard (*.ktx2);;DDS (*.dds)"));
+  if (!path.isEmpty())
+    saveCompressed(path);
+}
+
+void EnvironmentPanel::saveCompressed(const QString& path) {
+  struct Saved {
+    qint64 bytes = 0;
+    core::HdrError error;
+    double seconds = 0.0;
+  };
+  using Outcome = core::Result<Saved>;
+  const std::string source = m_view->environment().source;
+  const std::string target = path.toStdString();
+  m_saveCompressed->setEnabled(false);
+  m_compressedNote->setText(tr("Compressing…"));
+  m_compressedNote->setVisible(true);
+  m_loader->run<Outcome>(
+      [source, target](const core::WorkControl& control) -> Outcome {
+        core::Result<std::shared_ptr<const core::Image>> radiance =
+            core::environmentRadiance(source);
+        if (!radiance)
+          return core::makeError(radiance.error());
+        const std::optional<core::TextureContainer> container = core::containerForPath(target);
+        if (!container)
+          return core::makeError(target + ": the file must end in .ktx2 or .dds");
+        core::CompressionSettings settings;
+        settings.format = core::TextureFormat::Bc6h;
+        settings.mipmaps = true;
+        settings.zstdLevel = *container == core::TextureContainer::Ktx2 ? 19 : 0;
+        QElapsedTimer timer;
+        timer.start();
+        core::Result<core::CompressedTexture> texture =
+            core::compressMap(*radiance.value(), core::MapSlot::Color, settings, control);
+        if (!texture)
+          return core::makeError(texture.error());
+        Saved saved;
+        saved.seconds = double(timer.elapsed()) / 1000.0;
+        if (core::Status written =
+                core::saveCompressedTexture(texture.value(), target, settings.zstdLevel);
+            !written)
+          return core::makeError(written.error());
+        core::Result<core::Image> decoded = core::decodeLevel(texture.value(), 0);
+        if (!decoded)
+          return core::makeError(target + ": " + decoded.error());
+        saved.error = core::measureHdrError(*radiance.value(), decoded.value());
+        saved.bytes = QFileInfo(QString::fromStdString(target)).size();
+        return saved;
+      },
+      [this, path](Outcome&& outcome) {
+        m_saveCompressed->setEnabled(true);
+        if (!outcome) {
+          const QString message = QString::fromStdString(outcome.error());
+          m_compressedNote->setText(tr("Not saved: %1").arg(message));
+          QMessageBox::warning(this, tr("Relief: environment not saved"), message);
+          Q_EMIT compressedSaved(false, message);
+          return;
+        }
+        core::Environment environment = m_view->environment();
+        environment.source = path.toStdString();
+        m_view->setEnvironment(environment);
+        const QString message =
+            tr("%1: %2 KB, exposure PSNR %3 dB, mean error %4 stops (%5 s). Lighting the "
+               "material now; Undo returns to the original.")
+                .arg(QFileInfo(path).fileName())
+                .arg(double(outcome->bytes) / 1024.0, 0, 'f', 0)
+                .arg(outcome->error.exposurePsnr, 0, 'f', 1)
+                .arg(outcome->error.meanLog2Error, 0, 'f', 4)
+                .arg(outcome->seconds, 0, 'f', 1);
+        m_compressedNote->setText(message);
+        Q_EMIT compressedSaved(true, message);
       });
 }
 

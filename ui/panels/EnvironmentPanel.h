@@ -1,6 +1,7 @@
 // EnvironmentPanel: pbr shading's image-based light and the background, in the Light dock: the
-// environment (a built-in, or an EXR/HDR file read off the GUI thread and checked before it is
-// shown), its intensity and rotation, and what the background shows.
+// environment (a built-in, or an EXR/HDR file or BC6H texture read off the GUI thread and
+// checked before it is shown), its intensity and rotation, what the background shows, and
+// "Save as BC6H…": the environment compressed as it would ship, then lighting the material.
 #pragma once
 
 #include "ui/Forward.h"
@@ -9,6 +10,8 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
 
 namespace relief::ui::inline panels {
 
@@ -23,14 +26,23 @@ class EnvironmentPanel : public QWidget {
   QDoubleSpinBox* intensityBox() const { return m_intensity; }
   ParameterSlider* rotationControl() const { return m_rotation; }
   QComboBox* backgroundBox() const { return m_background; }
+  QPushButton* saveCompressedButton() const { return m_saveCompressed; }
+  QLabel* compressedNote() const { return m_compressedNote; }
 
   // Reads `path` off the GUI thread and shows it when it is a usable environment; otherwise
   // says why in a message box naming the file. The file dialog's choice ends here too.
   void loadFile(const QString& path);
+  // Compresses the environment shown into BC6H at `path` (.ktx2, supercompressed with
+  // Zstandard 19, or .dds; with mipmaps) off the GUI thread, then lights the material with the
+  // saved file as one undo step and says what it weighs and how far it is from the original.
+  // The button's file dialog ends here.
+  void saveCompressed(const QString& path);
 
  Q_SIGNALS:
   // A file finished loading: shown (ok) or refused (message names the file). For tests.
   void fileLoaded(bool ok, const QString& message);
+  // saveCompressed finished: saved and shown (ok), or why not.
+  void compressedSaved(bool ok, const QString& message);
 
  public Q_SLOTS:
   void showEnvironment();  // reads the view document's environment into the controls
@@ -41,6 +53,7 @@ class EnvironmentPanel : public QWidget {
   void applyEnvironment(bool dragging = false);
   void sourceChosen(int index);
   void chooseFile();
+  void chooseCompressedPath();
   // The combo's item for a file, added once (after the built-ins, before "File…").
   int fileItem(const QString& path);
 
@@ -51,6 +64,8 @@ class EnvironmentPanel : public QWidget {
   QDoubleSpinBox* m_intensity;
   ParameterSlider* m_rotation;
   QComboBox* m_background;
+  QPushButton* m_saveCompressed;
+  QLabel* m_compressedNote;
   int m_shownIndex = 0;  // the source item shown, to go back to when a file is refused
 };
 
