@@ -6,13 +6,16 @@
 // there is what the block can represent, and squared error there weighs a texel's error by its
 // size in stops, as HDR encoders are judged (multi-exposure PSNR, log error).
 //
-// Per block: one subset fitted once (principal axis, then least squares on the chosen weights)
-// and tried in the four one-subset modes; the 32 two-subset partitions ranked by how well two
-// lines fit their halves, and the best few fitted and tried in the ten two-subset modes. Each try
-// quantises the endpoints to the mode's bits, picks indices against the palette the decoder
-// will build, flips a subset whose anchor index would need its top bit, and clamps deltas the
-// mode cannot store. The least error wins; normal and best refit the winner's endpoints to its
-// indices once more.
+// Per block: one subset fitted once (principal axis, then least squares on the chosen weights);
+// the 32 two-subset partitions ranked by how well two lines fit their halves, and the best few
+// fitted. Each fit is tried in the modes of the most endpoint bits whose deltas fit (a finer
+// grid of the same shape loses nothing; modes 3 and 30 store endpoints as they are and always
+// fit): the endpoints quantised with each subset ordered so its anchor texel needs no flip,
+// indices picked against the palette the decoder will build. The least error wins; normal and
+// best refit the winner to its own indices and nudge its stored endpoints a step at a time.
+//
+// Weighing texels by brightness (what multi-exposure PSNR sees) was tried and left out: on the
+// bench's eight HDRIs it moved exposure PSNR by 0.1 dB at best and worsened the log error.
 #include "core/compression/Bc6hBlock.h"
 #include "core/compression/Bc7Block.h"
 #include "core/compression/BlockCodecs.h"
