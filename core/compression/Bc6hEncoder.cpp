@@ -72,50 +72,69 @@ int subsetOf(int subsets, int partition, int texel) {
   return subsets == 1 ? 0 : kSubsets[std::size_t(partition)][std::size_t(texel)];
 }
 
-// The residual of the best line through a subset's texels: total variance minus the largest
-// eigenvalue of their covariance (power iteration). Ranks partitions.
-float lineResidual(const Texels& texels, int subsets, int partition, int subset) {
-  float mean[3] = {0, 0, 0};
+// A subset's texels (valid ones only), their mean and covariance (xx, xy, xz, yy, yz, zz).
+struct SubsetStatistics {
+  int members[16];
   int count = 0;
+  float mean[3] = {0, 0, 0};
+  float cov[6] = {0, 0, 0, 0, 0, 0};
+};
+
+SubsetStatistics subsetStatistics(const Texels& texels, int subsets, int partition, int subset) {
+  SubsetStatistics stats;
   for (int texel = 0; texel < 16; ++texel) {
-    if (!(texels.validMask >> texel & 1) || subsetOf(subsets, partition, texel) != subset)
-      continue;
+    if ((texels.validMask >> texel & 1) && subsetOf(subsets, partition, texel) == subset)
+      stats.members[stats.count++] = texel;
+  }
+  if (stats.count == 0)
+    return stats;
+  for (int i = 0; i < stats.count; ++i) {
     for (int c = 0; c < 3; ++c)
-      mean[c] += texels.value[texel][c];
-    ++count;
+      stats.mean[c] += texels.value[stats.members[i]][c];
   }
-  if (count < 2)
-    return 0.0f;
-  for (float& m : mean)
-    m /= float(count);
-  float cov[6] = {0, 0, 0, 0, 0, 0};  // xx, xy, xz, yy, yz, zz
-  for (int texel = 0; texel < 16; ++texel) {
-    if (!(texels.validMask >> texel & 1) || subsetOf(subsets, partition, texel) != subset)
-      continue;
-    const float d[3] = {texels.value[texel][0] - mean[0], texels.value[texel][1] - mean[1],
-                        texels.value[texel][2] - mean[2]};
-    cov[0] += d[0] * d[0];
-    cov[1] += d[0] * d[1];
-    cov[2] += d[0] * d[2];
-    cov[3] += d[1] * d[1];
-    cov[4] += d[1] * d[2];
-    cov[5] += d[2] * d[2];
+  for (float& m : stats.mean)
+    m /= float(stats.count);
+  for (int i = 0; i < stats.count; ++i) {
+    const float* v = texels.value[stats.members[i]];
+    const float d[3] = {v[0] - stats.mean[0], v[1] - stats.mean[1], v[2] - stats.mean[2]};
+    stats.cov[0] += d[0] * d[0];
+    stats.cov[1] += d[0] * d[1];
+    stats.cov[2] += d[0] * d[2];
+    stats.cov[3] += d[1] * d[1];
+    stats.cov[4] += d[1] * d[2];
+    stats.cov[5] += d[2] * d[2];
   }
-  const float trace = cov[0] + cov[3] + cov[5];
-  float axis[3] = {1.0f, 1.0f, 1.0f};
+  return stats;
+}
+
+// The covariance's principal axis by power iteration (from the grey diagonal); returns its
+// eigenvalue, 0 when the texels do not spread.
+float principalAxis(const float cov[6], int iterations, float axis[3]) {
+  axis[0] = axis[1] = axis[2] = 0.57735f;
   float eigen = 0.0f;
-  for (int iteration = 0; iteration < 6; ++iteration) {
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     const float next[3] = {cov[0] * axis[0] + cov[1] * axis[1] + cov[2] * axis[2],
                            cov[1] * axis[0] + cov[3] * axis[1] + cov[4] * axis[2],
                            cov[2] * axis[0] + cov[4] * axis[1] + cov[5] * axis[2]};
     const float length = std::sqrt(next[0] * next[0] + next[1] * next[1] + next[2] * next[2]);
-    if (length <= 0.0f)
-      return 0.0f;
+    if (length <= 1e-12f)
+      break;
     eigen = length;
     for (int c = 0; c < 3; ++c)
       axis[c] = next[c] / length;
   }
-  return std::max(0.0f, trace - eigen);
+  return eigen;
+}
+
+// The residual of the best line through a subset's texels: total variance minus the largest
+// eigenvalue of their covariance. Ranks partitions.
+float lineResidual(const Texels& texels, int subsets, int partition, int subset) {
+  const SubsetStatistics stats = subsetStatistics(texels, subsets, partition, subset);
+  if (stats.count < 2)
+    return 0.0f;
+  float axis[3];
+  const float eigen = principalAxis(stats.cov, 6, axis);
+  return std::max(0.0f, stats.cov[0] + stats.cov[3] + stats.cov[5] - eigen);
 }
 
 using Endpoints = float[2][3];
@@ -131,46 +150,17 @@ int weightOf(int index, int indexBits) {
 // then `refits` rounds of least squares against the nearest weights.
 void fitSubset(const Texels& texels, int subsets, int partition, int subset, int indexBits,
                int refits, Endpoints& out) {
-  float mean[3] = {0, 0, 0};
-  int members[16];
-  int count = 0;
-  for (int texel = 0; texel < 16; ++texel) {
-    if ((texels.validMask >> texel & 1) && subsetOf(subsets, partition, texel) == subset)
-      members[count++] = texel;
-  }
+  const SubsetStatistics stats = subsetStatistics(texels, subsets, partition, subset);
+  const int count = stats.count;
+  const int* members = stats.members;
+  const float* mean = stats.mean;
   if (count == 0) {
     for (int c = 0; c < 3; ++c)
       out[0][c] = out[1][c] = 0.0f;
     return;
   }
-  for (int i = 0; i < count; ++i) {
-    for (int c = 0; c < 3; ++c)
-      mean[c] += texels.value[members[i]][c];
-  }
-  for (float& m : mean)
-    m /= float(count);
-  float cov[6] = {0, 0, 0, 0, 0, 0};
-  for (int i = 0; i < count; ++i) {
-    const float* v = texels.value[members[i]];
-    const float d[3] = {v[0] - mean[0], v[1] - mean[1], v[2] - mean[2]};
-    cov[0] += d[0] * d[0];
-    cov[1] += d[0] * d[1];
-    cov[2] += d[0] * d[2];
-    cov[3] += d[1] * d[1];
-    cov[4] += d[1] * d[2];
-    cov[5] += d[2] * d[2];
-  }
-  float axis[3] = {0.577f, 0.577f, 0.577f};
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const float next[3] = {cov[0] * axis[0] + cov[1] * axis[1] + cov[2] * axis[2],
-                           cov[1] * axis[0] + cov[3] * axis[1] + cov[4] * axis[2],
-                           cov[2] * axis[0] + cov[4] * axis[1] + cov[5] * axis[2]};
-    const float length = std::sqrt(next[0] * next[0] + next[1] * next[1] + next[2] * next[2]);
-    if (length <= 1e-12f)
-      break;
-    for (int c = 0; c < 3; ++c)
-      axis[c] = next[c] / length;
-  }
+  float axis[3];
+  principalAxis(stats.cov, 8, axis);
   float low = std::numeric_limits<float>::max(), high = -low;
   for (int i = 0; i < count; ++i) {
     const float* v = texels.value[members[i]];
