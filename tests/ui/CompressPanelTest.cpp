@@ -23,6 +23,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStandardItemModel>
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
@@ -65,6 +66,16 @@ class CompressPanelTest : public MainWindowFixture {
 TEST_F(CompressPanelTest, CompressesInTheBackgroundAndTheViewportShowsTheBlocks) {
   const auto colour = document()->material().map(MapSlot::Color).image;
   const auto normal = document()->material().map(MapSlot::Normal).image;
+  // BC6H is offered for the bricks' 16-bit height (enabled) and never for the sRGB colour map.
+  {
+    QComboBox* height = panel()->formatBox(MapSlot::Height);
+    const int bc6h = height->findData(int(TextureFormat::Bc6h));
+    ASSERT_GE(bc6h, 0);
+    auto* items = qobject_cast<QStandardItemModel*>(height->model());
+    ASSERT_NE(items, nullptr);
+    EXPECT_TRUE(items->item(bc6h)->isEnabled());
+    EXPECT_LT(panel()->formatBox(MapSlot::Color)->findData(int(TextureFormat::Bc6h)), 0);
+  }
   choose(MapSlot::Color, TextureFormat::Bc1);
   choose(MapSlot::Normal, TextureFormat::Bc5);
   choose(MapSlot::Height, TextureFormat::Bc4);

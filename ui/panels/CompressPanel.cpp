@@ -85,10 +85,12 @@ QGridLayout* CompressPanel::formatGrid() {
           tr("%1 — %2 bpp").arg(toQString(info.label)).arg(core::bitsPerPixel(format), 0, 'g', 3),
           int(format));
     }
-    // Half floats (BC6H) for the slots that take them, enabled for float maps only
-    // (syncFromDocument: core::formatsForMap).
+    // Half floats (BC6H) for single-value maps (a float height), enabled for 16- and 32-bit
+    // maps only (syncFromDocument: core::formatsForMap). A material's colour map is
+    // sRGB-encoded, which BC6H cannot hold, so its row never lists them.
     for (const core::TextureFormatInfo& info : core::allTextureFormats()) {
-      if (core::isHalfFloatFormat(info.format) && core::formatSuitsSlot(info.format, slot)) {
+      if (core::isHalfFloatFormat(info.format) &&
+          core::mapSlotTexels(slot) == core::MapTexels::Scalar) {
         row.format->addItem(tr("%1 — %2 bpp, float maps")
                                 .arg(toQString(info.label))
                                 .arg(core::bitsPerPixel(info.format), 0, 'g', 3),
