@@ -32,10 +32,14 @@ struct Bc1Effort {
   // and channel (in 8-bit levels, at unit weight) exceeds this; never when negative.
   float threeColourAbove;
   int perturbSweeps;  // sweeps nudging the quantised endpoints a step at a time (0: none)
+  // Best: the nudges also move a channel's two endpoints together (a step each, either way),
+  // and both the four- and the three-colour fit are nudged before they are compared.
+  bool thorough;
 };
 // Measured on a 2048x2048 mosaic of twelve photographs and four game colour maps
-// (tools/bench-cli's; uniform weights, one core): normal 36.37 dB in 2.2 us per block, best
-// 36.42 dB in 4.9 us, against libsquish's cluster fit's 36.41 dB in 14.8 us. In normal, one
+// (tools/bench-cli's; uniform weights, one core): normal 36.37 dB in 2.2 us per block (best
+// was 36.42 dB in 4.9 us before the search below), against libsquish's cluster fit's 36.41 dB
+// in 14.8 us. In normal, one
 // perturbation sweep and the three-colour mode where the error is large (an RMS of 4.6 levels
 // and up) give 36.37 dB; two sweeps and no three-colour mode gave 36.35 dB in 13% more time.
 // Trying the three-colour mode on every block cost 19% more time for 36.38 dB: on blocks
@@ -43,10 +47,18 @@ struct Bc1Effort {
 // Skipping the cluster search where the refined fit's error is below 10/3 (an RMS of 1.8
 // levels) saved 10% of normal's time at the same 36.366 dB; below 20/3, 16% for 36.364 dB;
 // skipping perturbation the same way cost 0.04 dB for 14%, so it stays.
+// Best searches further to meet crunch 1.04's (-dxtQuality uber, uniform metrics) quality:
+// cluster boundaries up to 8 texels from the refined ones (near exhaustive), joint nudges of a
+// channel's two endpoints, up to 16 sweeps, and the four- and three-colour fits each nudged
+// before they are compared. On five scikit-image photographs that took best from 36.05 to
+// 36.11 dB (crunch 36.14 dB) and on the mosaic from 36.42 to 36.49 dB (crunch 36.53 dB in
+// 14.8 s; best 2.7 s as a whole process, libsquish 3.6 s). Steps of two, and a second cluster
+// search with the texels sorted along the best fit's direction (squish's iteration), gained
+// nothing more.
 constexpr Bc1Effort kBc1Efforts[3] = {
-    {1, 0, 0.0f, -1.0f, 0},
-    {1, 1, 10.0f / 3.0f, 64.0f / 3.0f, 1},
-    {3, 2, 0.0f, 0.0f, 3},
+    {1, 0, 0.0f, -1.0f, 0, false},
+    {1, 1, 10.0f / 3.0f, 64.0f / 3.0f, 1, false},
+    {3, 8, 0.0f, 0.0f, 16, true},
 };
 
 int expand5(int v) {
@@ -386,7 +398,7 @@ void clusterSearch(const Source& source, const int sorted[16], int levels, int r
 // Steps each stored endpoint channel by one while the error falls, indices following. A step
 // changes one channel's palette values only, so each channel's share of every texel's error at
 // every level is kept, and a step recomputes one share (a third of a full evaluation).
-void perturb(const Source& source, int sweeps, Candidate& best) {
+void perturb(const Source& source, int sweeps, bool joint, Candidate& best) {
   const int levels = best.fourColour ? 4 : 3;
   float share[3][4][16];
   const auto channelShare = [&](int c, int q0, int q1, float out[4][16]) {
@@ -431,20 +443,22 @@ void perturb(const Source& source, int sweeps, Candidate& best) {
     const float before = best.error;
     for (int c = 0; c < 3; ++c) {
       sumOthers(c);
-      for (int e = 0; e < 2; ++e) {
-        for (int step : {-1, 1}) {
-          Endpoint e0 = best.e0, e1 = best.e1;
-          int& q = (e == 0 ? e0 : e1).q[c];
-          q += step;
-          if (q < 0 || q > (c == 1 ? 63 : 31))
-            continue;
-          float trial[4][16];
-          channelShare(c, e0.q[c], e1.q[c], trial);
-          if (total(trial) < best.error) {
-            best.error = std::numeric_limits<float>::max();
-            evaluate(source, e0, e1, best.fourColour, best);  // the levels, and the same error
-            std::copy(&trial[0][0], &trial[0][0] + 64, &share[c][0][0]);
-          }
+      // Steps of (e0, e1): one endpoint at a time, then (joint) both together.
+      static constexpr int kSteps[8][2] = {{-1, 0},  {1, 0}, {0, -1}, {0, 1},
+                                           {-1, -1}, {1, 1}, {-1, 1}, {1, -1}};
+      for (int k = 0; k < (joint ? 8 : 4); ++k) {
+        Endpoint e0 = best.e0, e1 = best.e1;
+        e0.q[c] += kSteps[k][0];
+        e1.q[c] += kSteps[k][1];
+        const int top = c == 1 ? 63 : 31;
+        if (e0.q[c] < 0 || e0.q[c] > top || e1.q[c] < 0 || e1.q[c] > top)
+          continue;
+        float trial[4][16];
+        channelShare(c, e0.q[c], e1.q[c], trial);
+        if (total(trial) < best.error) {
+          best.error = std::numeric_limits<float>::max();
+          evaluate(source, e0, e1, best.fourColour, best);  // the levels, and the same error
+          std::copy(&trial[0][0], &trial[0][0] + 64, &share[c][0][0]);
         }
       }
     }
@@ -577,6 +591,8 @@ void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality q
     clusterSearch(source, sorted, 4, effort.clusterRadius, best);
     refine(source, 1, best);
   }
+  if (effort.thorough && best.error > 0.0f)
+    perturb(source, effort.perturbSweeps, true, best);
   if (bc1 && effort.threeColourAbove >= 0.0f &&
       best.error > effort.threeColourAbove * weightSum * float(source.count)) {
     // The three-colour mode (half-way point, no black: Relief's BC1 is opaque) where it wins.
@@ -584,11 +600,13 @@ void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality q
     evaluate(source, quantise(e0), quantise(e1), false, three);
     refine(source, effort.refinePasses, three);
     clusterSearch(source, sorted, 3, std::max(effort.clusterRadius, 1), three);
+    if (effort.thorough && three.error > 0.0f)
+      perturb(source, effort.perturbSweeps, true, three);
     if (three.error < best.error)
       best = three;
   }
-  if (effort.perturbSweeps > 0 && best.error > 0.0f)
-    perturb(source, effort.perturbSweeps, best);
+  if (!effort.thorough && effort.perturbSweeps > 0 && best.error > 0.0f)
+    perturb(source, effort.perturbSweeps, false, best);
   writeBlock(best, bc1, out);
 }
 

@@ -43,8 +43,9 @@ double psnr(const Image& map, const CompressedTexture& texture) {
 
 // The quality bar, as quality (the speed is tools/bench-compress's: 11x libsquish's
 // cluster fit): the mean PSNR over the photographs at least cluster fit's less 0.05 dB at
-// normal, at or above it at best, and fast above libsquish's range fit. Measured on these
-// crops: fast 1.6 dB above range fit, normal within 0.03 dB of cluster fit, best above it.
+// normal, above it at best, and fast above libsquish's range fit. Measured on these crops:
+// fast 1.6 dB above range fit, normal within 0.03 dB of cluster fit, best 0.09 dB above it
+// (its search is crunch's quality class: docs/compression.md); the bound is 0.06.
 TEST(Bc1Test, MatchesLibsquishClusterFitOnPhotographs) {
   const std::vector<Image> photos = test::photographCrops(256);
   ASSERT_FALSE(photos.empty());
@@ -62,7 +63,7 @@ TEST(Bc1Test, MatchesLibsquishClusterFitOnPhotographs) {
       "cluster fit %.3f\n",
       fast, normal, best, rangeFit, clusterFit);
   EXPECT_GE(normal, clusterFit - 0.05);
-  EXPECT_GE(best, clusterFit);
+  EXPECT_GE(best, clusterFit + 0.06);
   EXPECT_GE(fast, rangeFit + 1.0);
   EXPECT_GE(best, normal);
   EXPECT_GE(normal, fast);
