@@ -190,6 +190,10 @@ void EnvironmentPanel::saveCompressed(const QString& path) {
   using Outcome = core::Result<Saved>;
   const std::string source = m_view->environment().source;
   const std::string target = path.toStdString();
+  // Disabling a focused button moves the focus on, and the Light dock's scroll area then jumps
+  // to the widget that took it, away from the note below: let go of the focus first.
+  const bool hadFocus = m_saveCompressed->hasFocus();
+  m_saveCompressed->clearFocus();
   m_saveCompressed->setEnabled(false);
   m_compressedNote->setText(tr("Compressing…"));
   m_compressedNote->setVisible(true);
@@ -225,8 +229,10 @@ void EnvironmentPanel::saveCompressed(const QString& path) {
         saved.bytes = QFileInfo(QString::fromStdString(target)).size();
         return saved;
       },
-      [this, path](Outcome&& outcome) {
+      [this, path, hadFocus](Outcome&& outcome) {
         m_saveCompressed->setEnabled(true);
+        if (hadFocus)
+          m_saveCompressed->setFocus();
         if (!outcome) {
           const QString message = QString::fromStdString(outcome.error());
           m_compressedNote->setText(tr("Not saved: %1").arg(message));
