@@ -65,10 +65,8 @@ double headlineQuality(const CompressionReport& report) {
   return report.normal ? -report.normal->meanDegrees : report.image.psnr;
 }
 
-std::string headlineQualityName(MapSlot slot, bool hdr) {
-  return slot == MapSlot::Normal ? "mean angular error (degrees)"
-         : hdr                   ? "exposure PSNR (dB)"
-                                 : "PSNR (dB)";
+std::string headlineQualityName(MapSlot slot) {
+  return slot == MapSlot::Normal ? "mean angular error (degrees)" : "PSNR (dB)";
 }
 
 QJsonObject reportToJson(const CompressionReport& report) {

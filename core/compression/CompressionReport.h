@@ -39,7 +39,7 @@ CompressionReport makeCompressionReport(const Image& reference, const Image& can
 // The figure "compare all formats" ranks by, larger is better: PSNR in dB for colour and data
 // (exposure PSNR for a map beyond 0..1: HDR), minus the mean angle in degrees for normals.
 double headlineQuality(const CompressionReport& report);
-std::string headlineQualityName(MapSlot slot, bool hdr = false);
+std::string headlineQualityName(MapSlot slot);
 // A map judged in float (HdrError): linear, 16 or 32 bits per channel, values beyond 0..1, and
 // not a normal map.
 bool isHdrMap(const Image& map, MapSlot slot);

@@ -222,10 +222,13 @@ void EnvironmentPanel::saveCompressed(const QString& path) {
                 core::saveCompressedTexture(texture.value(), target, settings.zstdLevel);
             !written)
           return core::makeError(written.error());
-        core::Result<core::Image> decoded = core::decodeLevel(texture.value(), 0);
-        if (!decoded)
-          return core::makeError(target + ": " + decoded.error());
-        saved.error = core::measureHdrError(*radiance.value(), decoded.value());
+        // Read back as the renderer will light with it: this also puts the file in the
+        // environment cache here, off the GUI thread, before the viewport asks for it.
+        core::Result<std::shared_ptr<const core::Image>> shipped =
+            core::environmentRadiance(target);
+        if (!shipped)
+          return core::makeError(shipped.error());
+        saved.error = core::measureHdrError(*radiance.value(), *shipped.value());
         saved.bytes = QFileInfo(QString::fromStdString(target)).size();
         return saved;
       },
