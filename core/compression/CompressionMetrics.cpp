@@ -1,7 +1,7 @@
 // CompressionMetrics; see CompressionMetrics.h.
 #include "core/compression/CompressionMetrics.h"
 
-#include "core/base/ParallelFor.h"
+#include "core/image/PlaneConvolution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,35 +26,17 @@ double percentile(std::vector<float> values, double fraction) {
 // Separable 11-tap Gaussian (sigma 1.5), edges clamped.
 std::vector<float> gaussianBlur(const std::vector<float>& plane, int width, int height) {
   constexpr int kRadius = 5;
-  float kernel[2 * kRadius + 1];
+  std::vector<float> kernel(2 * kRadius + 1);
   float sum = 0.0f;
   for (int i = -kRadius; i <= kRadius; ++i) {
-    kernel[i + kRadius] = std::exp(-float(i * i) / (2.0f * 1.5f * 1.5f));
-    sum += kernel[i + kRadius];
+    kernel[std::size_t(i + kRadius)] = std::exp(-float(i * i) / (2.0f * 1.5f * 1.5f));
+    sum += kernel[std::size_t(i + kRadius)];
   }
   for (float& k : kernel)
     k /= sum;
   std::vector<float> rows(plane.size()), out(plane.size());
-  parallelFor(height, [&](int y) {
-    for (int x = 0; x < width; ++x) {
-      float acc = 0.0f;
-      for (int i = -kRadius; i <= kRadius; ++i) {
-        const int sx = std::clamp(x + i, 0, width - 1);
-        acc += kernel[i + kRadius] * plane[std::size_t(y) * std::size_t(width) + std::size_t(sx)];
-      }
-      rows[std::size_t(y) * std::size_t(width) + std::size_t(x)] = acc;
-    }
-  });
-  parallelFor(height, [&](int y) {
-    for (int x = 0; x < width; ++x) {
-      float acc = 0.0f;
-      for (int i = -kRadius; i <= kRadius; ++i) {
-        const int sy = std::clamp(y + i, 0, height - 1);
-        acc += kernel[i + kRadius] * rows[std::size_t(sy) * std::size_t(width) + std::size_t(x)];
-      }
-      out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = acc;
-    }
-  });
+  convolvePlane(plane.data(), rows.data(), width, height, kernel, true);
+  convolvePlane(rows.data(), out.data(), width, height, kernel, false);
   return out;
 }
 

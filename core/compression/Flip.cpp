@@ -2,6 +2,7 @@
 #include "core/compression/Flip.h"
 
 #include "core/base/ParallelFor.h"
+#include "core/image/PlaneConvolution.h"
 
 #include <algorithm>
 #include <array>
@@ -105,39 +106,6 @@ Planes opponentPlanes(const Image& image) {
   return planes;
 }
 
-// One plane convolved with `kernel` (odd length, centred) along rows (`alongRows`) or columns,
-// the edges clamped (the paper's reference code replicates the border). Rows go through a
-// padded copy and columns accumulate whole rows, so the inner loops run over contiguous floats
-// without a test per tap and vectorise.
-void convolve(const float* plane, float* out, int width, int height,
-              const std::vector<float>& kernel, bool alongRows) {
-  const int radius = int(kernel.size() / 2);
-  const auto row = [&](int y) { return plane + std::size_t(y) * std::size_t(width); };
-  parallelFor(height, [&](int y) {
-    float* target = out + std::size_t(y) * std::size_t(width);
-    if (alongRows) {
-      std::vector<float> padded(std::size_t(width + 2 * radius));
-      const float* source = row(y);
-      for (int i = 0; i < width + 2 * radius; ++i)
-        padded[std::size_t(i)] = source[std::clamp(i - radius, 0, width - 1)];
-      for (int x = 0; x < width; ++x) {
-        float sum = 0.0f;
-        for (std::size_t k = 0; k < kernel.size(); ++k)
-          sum += kernel[k] * padded[std::size_t(x) + k];
-        target[x] = sum;
-      }
-    } else {
-      std::fill(target, target + width, 0.0f);
-      for (int k = -radius; k <= radius; ++k) {
-        const float weight = kernel[std::size_t(k + radius)];
-        const float* source = row(std::clamp(y + k, 0, height - 1));
-        for (int x = 0; x < width; ++x)
-          target[x] += weight * source[x];
-      }
-    }
-  });
-}
-
 // Buffers reused across the filters: a 4096^2 map's planes are 64 MiB each, and allocating a
 // fresh one per pass made zeroing and page faults half of the time.
 struct Scratch {
@@ -149,8 +117,8 @@ struct Scratch {
 const std::vector<float>& separable(const std::vector<float>& plane, int width, int height,
                                     const std::vector<float>& rows,
                                     const std::vector<float>& columns, Scratch& scratch) {
-  convolve(plane.data(), scratch.between.data(), width, height, rows, true);
-  convolve(scratch.between.data(), scratch.result.data(), width, height, columns, false);
+  convolvePlane(plane.data(), scratch.between.data(), width, height, rows, true);
+  convolvePlane(scratch.between.data(), scratch.result.data(), width, height, columns, false);
   return scratch.result;
 }
 
