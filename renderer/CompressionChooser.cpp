@@ -12,7 +12,7 @@ namespace {
 // Whole combinations rendered together: for a budget the best few by the summed estimate
 // (which ranks well but not exactly, since errors overlap); for a target, the cheapest ones the
 // hopeful bound allows, before settling for the cheapest the pessimistic sum promises. Each is
-// one render of the three views (about half a second at 640x360 on llvmpipe).
+// one render of the three views (ChooserRequest::width x height).
 constexpr std::size_t kBudgetRenders = 4;
 constexpr std::size_t kTargetRenders = 6;
 

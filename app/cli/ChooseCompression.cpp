@@ -163,6 +163,8 @@ QJsonObject report(const renderer::ChooserResult& result, const ChooseRequest& r
       {QStringLiteral("device"), qstr(core::chooserPlatformName(request.chooser.platform))},
       {QStringLiteral("quality"), qstr(core::compressionQualityName(request.chooser.quality))},
       {QStringLiteral("zstd"), request.chooser.zstdLevel},
+      {QStringLiteral("viewSize"),
+       QStringLiteral("%1x%2").arg(request.chooser.width).arg(request.chooser.height)},
       {QStringLiteral("met"), result.pick.has_value()},
       {QStringLiteral("maps"), maps},
       {QStringLiteral("closest"),

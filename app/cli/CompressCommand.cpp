@@ -143,7 +143,7 @@ CliOptions compressOptions() {
     options.push_back(std::move(goal));
   options.push_back({option::kSize, QStringLiteral("WxH"),
                      QStringLiteral("With --preset: the rendered views' size."),
-                     QStringLiteral("640x360")});
+                     QStringLiteral("320x240")});
   options.push_back(jsonOption());
   return options;
 }

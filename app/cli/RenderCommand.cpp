@@ -594,9 +594,14 @@ std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest&
   if (auto exit = resolveView(parser, request))
     return exit;
   // The chooser renders every candidate from three views: a smaller frame unless one is asked.
-  if (request.choose && !parser.isSet(option::kSize)) {
-    request.width = 640;
-    request.height = 360;
+  if (request.choose) {
+    const renderer::ChooserRequest defaults;
+    if (!parser.isSet(option::kSize)) {
+      request.width = defaults.width;
+      request.height = defaults.height;
+    }
+    request.choose->chooser.width = request.width;
+    request.choose->chooser.height = request.height;
   }
   return std::nullopt;
 }

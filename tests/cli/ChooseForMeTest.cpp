@@ -80,6 +80,8 @@ TEST(ChooseForMe, TheBudgetHoldsAndTheFilesAreTheChoice) {
   const QJsonObject all = json(tight);
   ASSERT_EQ(all["maps"].toArray().size(), 3);
   EXPECT_FALSE(all["met"].toBool());
+  // The views are rendered at the --size asked for (the chooser once ignored it).
+  EXPECT_EQ(all["viewSize"].toString(), QStringLiteral("128x96"));
   const auto [smallest, largest] = combinationBounds(all);
   ASSERT_LT(smallest, largest);
   EXPECT_NE(tight.err.find("cannot be met"), std::string::npos) << tight.err;
