@@ -27,7 +27,7 @@ test: deps
 # protector, fortify, relro, bind-now), which lintian checks for.
 package: deps
 	cmake -S . -B $(PACKAGE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DRELIEF_BUILD_TESTS=OFF \
-	  -DRELIEF_BUILD_TOOLS=OFF -DRELIEF_PRECOMPILED_HEADERS=OFF \
+	  -DRELIEF_BUILD_TOOLS=OFF -DRELIEF_PRECOMPILED_HEADERS=OFF -DRELIEF_UNITY_BUILD=OFF \
 	  -DCMAKE_CXX_FLAGS="$$(DEB_BUILD_MAINT_OPTIONS=hardening=+all dpkg-buildflags --get CXXFLAGS) $$(DEB_BUILD_MAINT_OPTIONS=hardening=+all dpkg-buildflags --get CPPFLAGS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="$$(DEB_BUILD_MAINT_OPTIONS=hardening=+all dpkg-buildflags --get LDFLAGS)"
 	cmake --build $(PACKAGE_BUILD) -j $(JOBS)

@@ -67,6 +67,17 @@ function(relief_precompile target)
     target_precompile_headers(${target} PRIVATE ${ARGN})
   endif()
 endfunction()
+# relief_unity(<target>): compiles the target's files a few at a time as one file (a unity
+# build): they include much the same project and Qt headers beyond the precompiled ones, and
+# parsing those once per batch instead of once per file took a third off the test executables'
+# compile time. Names in a file's anonymous namespace must then differ from those of the other
+# files of its target. RELIEF_UNITY_BUILD=OFF (the package build) compiles every file alone.
+option(RELIEF_UNITY_BUILD "Compile the heaviest targets' files a few at a time as one" ON)
+function(relief_unity target)
+  if(RELIEF_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 6)
+  endif()
+endfunction()
 set(RELIEF_STD_PRECOMPILED algorithm array cmath cstdint cstring functional memory optional string
                            string_view vector)
 

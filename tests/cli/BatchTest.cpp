@@ -24,10 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-QString q(const std::string& text) {
-  return QString::fromStdString(text);
-}
-
 std::string writeManifest(const std::string& folder, const std::string& lines) {
   const std::string path = folder + "/jobs.txt";
   std::ofstream(path) << lines;

@@ -23,10 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-QString q(const std::string& text) {
-  return QString::fromStdString(text);
-}
-
 constexpr int kCut = 64;
 
 std::string cutMaterial() {

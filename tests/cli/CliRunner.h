@@ -15,6 +15,11 @@ struct CliRun {
   std::string err;
 };
 
+// A path or word for a command line.
+inline QString q(const std::string& text) {
+  return QString::fromStdString(text);
+}
+
 CliRun runCli(const QStringList& arguments,
               const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment());
 

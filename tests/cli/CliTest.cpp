@@ -31,10 +31,6 @@
 namespace relief::test {
 namespace {
 
-QString q(const std::string& text) {
-  return QString::fromStdString(text);
-}
-
 int readImageBits(const std::string& path) {
   core::Result<core::ImageFileInfo> info = core::readImageInfo(path);
   return info.ok() ? info->bitsPerChannel : 0;

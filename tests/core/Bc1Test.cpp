@@ -6,6 +6,7 @@
 #include "core/compression/BlockCodecs.h"
 #include "core/compression/CompressionMetrics.h"
 #include "core/compression/Compressor.h"
+#include "support/ImageCompare.h"
 #include "support/TestPhotos.h"
 
 #include <gtest/gtest.h>
@@ -37,10 +38,6 @@ CompressedTexture libsquish(const Image& map, int fit) {
   return texture;
 }
 
-double psnr(const Image& map, const CompressedTexture& texture) {
-  return measureImageError(map, decodeAsMap(texture).value()).psnr;
-}
-
 // The quality bar, as quality (the speed is tools/bench-compress's: 11x libsquish's
 // cluster fit): the mean PSNR over the photographs at least cluster fit's less 0.05 dB at
 // normal, above it at best, and fast above libsquish's range fit. Measured on these crops:
@@ -52,11 +49,11 @@ TEST(Bc1Test, MatchesLibsquishClusterFitOnPhotographs) {
   double fast = 0, normal = 0, best = 0, rangeFit = 0, clusterFit = 0;
   for (const Image& photo : photos) {
     const double n = double(photos.size());
-    fast += psnr(photo, ours(photo, CompressionQuality::Fast)) / n;
-    normal += psnr(photo, ours(photo, CompressionQuality::Normal)) / n;
-    best += psnr(photo, ours(photo, CompressionQuality::Best)) / n;
-    rangeFit += psnr(photo, libsquish(photo, squish::kColourRangeFit)) / n;
-    clusterFit += psnr(photo, libsquish(photo, squish::kColourClusterFit)) / n;
+    fast += test::decodedPsnr(photo, ours(photo, CompressionQuality::Fast)) / n;
+    normal += test::decodedPsnr(photo, ours(photo, CompressionQuality::Normal)) / n;
+    best += test::decodedPsnr(photo, ours(photo, CompressionQuality::Best)) / n;
+    rangeFit += test::decodedPsnr(photo, libsquish(photo, squish::kColourRangeFit)) / n;
+    clusterFit += test::decodedPsnr(photo, libsquish(photo, squish::kColourClusterFit)) / n;
   }
   std::printf(
       "BC1 mean PSNR: ours fast %.3f normal %.3f best %.3f; libsquish range fit %.3f, "
@@ -155,7 +152,7 @@ TEST(Bc1Test, PerceptualWeightsFavourLuminance) {
   const CompressedTexture uniform = ours(photo, CompressionQuality::Normal, false);
   const CompressedTexture perceptual = ours(photo, CompressionQuality::Normal, true);
   EXPECT_LT(weighted(perceptual), weighted(uniform));
-  EXPECT_GT(psnr(photo, uniform), psnr(photo, perceptual));
+  EXPECT_GT(test::decodedPsnr(photo, uniform), test::decodedPsnr(photo, perceptual));
 }
 
 }  // namespace

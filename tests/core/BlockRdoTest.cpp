@@ -12,6 +12,7 @@
 #include "core/compression/Compressor.h"
 #include "core/compression/TextureFile.h"
 #include "core/generators/NormalFromHeight.h"
+#include "support/ImageCompare.h"
 #include "support/TestPhotos.h"
 
 #include <gtest/gtest.h>
@@ -33,10 +34,6 @@ CompressedTexture compressed(const Image& map, MapSlot slot, TextureFormat forma
 
 std::size_t zstdBytes(const CompressedTexture& texture) {
   return encodeKtx2(texture, 19).size();
-}
-
-double psnr(const Image& map, const CompressedTexture& texture) {
-  return measureImageError(map, decodeAsMap(texture).value()).psnr;
 }
 
 TEST(BlockRdo, LambdaZeroIsTheEncodersBlocks) {
@@ -86,7 +83,7 @@ TEST(BlockRdo, RisingLambdaShrinksTheFileWithinTheStatedLoss) {
         EXPECT_LE(bytes, previous) << textureFormatInfo(c.format).name << " lambda " << lambdas[i];
         previous = bytes;
         meanBytes[i] += double(bytes) / double(photos.size());
-        meanPsnr[i] += psnr(map, texture) / double(photos.size());
+        meanPsnr[i] += test::decodedPsnr(map, texture) / double(photos.size());
       }
     }
     std::printf("%s: bytes %.0f %.0f %.0f %.0f, PSNR %.2f %.2f %.2f %.2f\n",

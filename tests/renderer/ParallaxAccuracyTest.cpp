@@ -313,10 +313,10 @@ TEST_F(ParallaxAccuracy, DisplacementConvergesToTheExactTracerAsTessellationGrow
 // POM's error still falls with its samples. A 256-texel map of 32-texel plateaus at 10 degrees:
 // the near rows are magnified, the far ones minified.
 TEST_F(ParallaxAccuracy, ErrorViewLeavesOutPixelsWhereTheMapIsMinified) {
-  constexpr int kSize = 256;
-  Image field(kSize, kSize, 1);
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x)
+  constexpr int kPlateauSize = 256;
+  Image field(kPlateauSize, kPlateauSize, 1);
+  for (int y = 0; y < kPlateauSize; ++y) {
+    for (int x = 0; x < kPlateauSize; ++x)
       field.at(x, y, 0) = ((x / 32 + y / 32) % 2 == 0) ? 0.9f : 0.2f;
   }
   const auto errorView = [&](core::Technique technique, int samples) {

@@ -12,16 +12,16 @@ namespace {
 using core::Image;
 using core::ParamId;
 
-constexpr double kScale = 0.05;
+constexpr double kFlatScale = 0.05;
 
-// A flat field at h = 0: with heightBias = -heightScale the surface lies kScale UV below the
+// A flat field at h = 0: with heightBias = -heightScale the surface lies kFlatScale UV below the
 // mesh everywhere, so every technique's answer is known exactly.
 core::Material sunkenMaterial(core::Technique technique) {
   core::Material material;
   material.setMap(core::MapSlot::Height, std::make_shared<Image>(16, 16, 1));
   material.setTechnique(technique);
-  material.setParameter(ParamId::HeightScale, kScale);
-  material.setParameter(ParamId::HeightBias, -kScale);
+  material.setParameter(ParamId::HeightScale, kFlatScale);
+  material.setParameter(ParamId::HeightBias, -kFlatScale);
   material.setParameter(ParamId::ShadowMode, double(core::ShadowMode::Off));
   return material;
 }
@@ -49,10 +49,10 @@ TEST_F(ReliefOptions, DepthOffsetWritesTheDepthOfTheDisplacedSurface) {
   offscreen().setMaterial(material);
   auto displaced = offscreen().render(frame, 64, 64);
   ASSERT_TRUE(surface.ok() && displaced.ok());
-  // Straight down at the centre: the mesh is `distance` away, the sunken surface 2 * kScale
+  // Straight down at the centre: the mesh is `distance` away, the sunken surface 2 * kFlatScale
   // world units further.
   EXPECT_NEAR(surface->at(32, 32, 0), distance, 0.01f);
-  EXPECT_NEAR(displaced->at(32, 32, 0), distance + 2.0 * kScale, 0.01f);
+  EXPECT_NEAR(displaced->at(32, 32, 0), distance + 2.0 * kFlatScale, 0.01f);
 }
 
 TEST_F(ReliefOptions, UvEdgeClampDiscardsWhatLeavesTheUvRange) {

@@ -19,11 +19,11 @@ using core::Image;
 using core::ParamId;
 using core::Technique;
 
-// As a real 512-texel floor: one level of 8 bits per texel is a 5.7 degree slope at kScale.
-constexpr int kSize = 512;
+// As a real 512-texel floor: one level of 8 bits per texel is a 5.7 degree slope at kAcneScale.
+constexpr int kAcneSize = 512;
 constexpr int kTile = 128;   // tile pitch in texels
 constexpr int kMortar = 12;  // mortar width in texels
-constexpr double kScale = 0.05;
+constexpr double kAcneScale = 0.05;
 
 bool inMortar(int x, int y) {
   return x % kTile < kMortar || y % kTile < kMortar;
@@ -34,24 +34,24 @@ bool inMortar(int x, int y) {
 // staircase of single steps at 8 bits), one with JPEG's marks (8x8 blocks up to four levels
 // apart, and two levels of noise either way), one a low dome. A march's hit on a bump lies on
 // the chord under it, inside the surface, which is where acne came from. The steepest slopes
-// on the tops are the JPEG tile's block edges, 39 degrees at kScale (a line from one top to
+// on the tops are the JPEG tile's block edges, 39 degrees at kAcneScale (a line from one top to
 // another rises at most 12, the ramp 1.1, the dome 2.5): a light 60 degrees up is above every
 // slope but the mortar's walls.
 Image tileField(int bits) {
-  Image field(kSize, kSize, 1);
+  Image field(kAcneSize, kAcneSize, 1);
   const double levels = bits >= 32 ? 0.0 : double((1u << bits) - 1);
   std::uint32_t state = 12345u;
   const auto random = [&state] {
     state = state * 1664525u + 1013904223u;
     return int(state >> 16);
   };
-  int blockOffset[kSize / 8][kSize / 8];
+  int blockOffset[kAcneSize / 8][kAcneSize / 8];
   for (auto& row : blockOffset) {
     for (int& offset : row)
       offset = random() % 5 - 2;  // -2..2 levels of 8 bits
   }
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kAcneSize; ++y) {
+    for (int x = 0; x < kAcneSize; ++x) {
       // The four kinds meet at the map's centre, where the camera looks.
       const int tile = (x / kTile) + 4 * (y / kTile);
       const int kind = (x / kTile + 2 * (y / kTile)) % 4;
@@ -77,8 +77,8 @@ core::Material tileMaterial(int bits, Technique technique, core::ShadowMode mode
   core::Material material;
   material.setMap(core::MapSlot::Height, std::make_shared<Image>(tileField(bits)));
   material.setTechnique(technique);
-  material.setParameter(ParamId::HeightScale, kScale);
-  material.setParameter(ParamId::HeightBias, -kScale);
+  material.setParameter(ParamId::HeightScale, kAcneScale);
+  material.setParameter(ParamId::HeightBias, -kAcneScale);
   material.setParameter(ParamId::ShadowMode, double(mode));
   material.setParameter(ParamId::ShadowStrength, 1.0);
   material.setParameter(ParamId::ShadowLimit, 0.0);
@@ -111,8 +111,8 @@ int shadowedTileTops(const Image& shadow, const Image& uv, float litAbove, int& 
         continue;
       // Texel rows run from the image's top, texture V from its bottom (material_inputs.glsl).
       const double u = uv.at(x, y, 0), v = uv.at(x, y, 1);
-      const int tx = int(std::floor((u - std::floor(u)) * kSize));
-      const int ty = int(std::floor((1.0 - (v - std::floor(v))) * kSize)) % kSize;
+      const int tx = int(std::floor((u - std::floor(u)) * kAcneSize));
+      const int ty = int(std::floor((1.0 - (v - std::floor(v))) * kAcneSize)) % kAcneSize;
       const bool interior = tx % kTile >= kMortar + 2 && tx % kTile < kTile - 2 &&
                             ty % kTile >= kMortar + 2 && ty % kTile < kTile - 2;
       if (!interior)

@@ -20,16 +20,16 @@ namespace {
 using core::Image;
 using core::ParamId;
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 240;
+constexpr int kSilhouetteWidth = 320;
+constexpr int kSilhouetteHeight = 240;
 
 Image studdedField() {
   // Square studs at the top on a floor at the bottom: most of the surface lies a full depth
   // under the mesh, so the displaced outline is inset everywhere but at the studs.
-  constexpr int kSize = 64;
-  Image field(kSize, kSize, 1);
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x)
+  constexpr int kFieldSize = 64;
+  Image field(kFieldSize, kFieldSize, 1);
+  for (int y = 0; y < kFieldSize; ++y) {
+    for (int x = 0; x < kFieldSize; ++x)
       field.at(x, y, 0) = (x % 16 < 6 && y % 16 < 6) ? 1.0f : 0.0f;
   }
   return field;
@@ -62,14 +62,14 @@ class Silhouettes : public OffscreenTest {
     frame.view.camera.distance = 2.6f;
     frame.debugView = core::DebugView::Uv;
     frame.output = renderer::FrameOutput::FloatData;
-    core::Result<Image> image = offscreen().render(frame, kWidth, kHeight);
+    core::Result<Image> image = offscreen().render(frame, kSilhouetteWidth, kSilhouetteHeight);
     EXPECT_TRUE(image.ok()) << (image.ok() ? "" : image.error());
-    std::vector<bool> covered(std::size_t(kWidth) * kHeight, false);
+    std::vector<bool> covered(std::size_t(kSilhouetteWidth) * kSilhouetteHeight, false);
     if (!image.ok())
       return covered;
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x)
-        covered[std::size_t(y) * kWidth + std::size_t(x)] = image->at(x, y, 3) > 0.0f;
+    for (int y = 0; y < kSilhouetteHeight; ++y) {
+      for (int x = 0; x < kSilhouetteWidth; ++x)
+        covered[std::size_t(y) * kSilhouetteWidth + std::size_t(x)] = image->at(x, y, 3) > 0.0f;
     }
     return covered;
   }
@@ -79,20 +79,20 @@ class Silhouettes : public OffscreenTest {
 // 4-neighbour).
 std::vector<bool> outlineBand(const std::vector<bool>& reference, int radius) {
   const auto at = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < kWidth && y < kHeight &&
-           reference[std::size_t(y) * kWidth + std::size_t(x)];
+    return x >= 0 && y >= 0 && x < kSilhouetteWidth && y < kSilhouetteHeight &&
+           reference[std::size_t(y) * kSilhouetteWidth + std::size_t(x)];
   };
   std::vector<bool> band(reference.size(), false);
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
+  for (int y = 0; y < kSilhouetteHeight; ++y) {
+    for (int x = 0; x < kSilhouetteWidth; ++x) {
       if (!at(x, y) || (at(x - 1, y) && at(x + 1, y) && at(x, y - 1) && at(x, y + 1)))
         continue;
       for (int dy = -radius; dy <= radius; ++dy) {
         for (int dx = -radius; dx <= radius; ++dx) {
           const int bx = x + dx, by = y + dy;
-          if (dx * dx + dy * dy <= radius * radius && bx >= 0 && by >= 0 && bx < kWidth &&
-              by < kHeight)
-            band[std::size_t(by) * kWidth + std::size_t(bx)] = true;
+          if (dx * dx + dy * dy <= radius * radius && bx >= 0 && by >= 0 && bx < kSilhouetteWidth &&
+              by < kSilhouetteHeight)
+            band[std::size_t(by) * kSilhouetteWidth + std::size_t(bx)] = true;
         }
       }
     }
@@ -163,10 +163,10 @@ TEST_F(Silhouettes, ThePlaneIsUnchangedAndItsClipKept) {
     material.setParameter(ParamId::UvEdge,
                           double(clamp ? core::UvEdge::Clamp : core::UvEdge::Repeat));
     offscreen().setMaterial(material);
-    core::Result<Image> plain = offscreen().render(frame, kWidth, kHeight);
+    core::Result<Image> plain = offscreen().render(frame, kSilhouetteWidth, kSilhouetteHeight);
     material.setParameter(ParamId::CurvedSilhouettes, 1.0);
     offscreen().setMaterial(material);
-    core::Result<Image> curved = offscreen().render(frame, kWidth, kHeight);
+    core::Result<Image> curved = offscreen().render(frame, kSilhouetteWidth, kSilhouetteHeight);
     ASSERT_TRUE(plain.ok() && curved.ok());
     const ImageDifference difference = compareImages(plain.value(), curved.value());
     // The same march stepped in distance instead of height: the same surface, a texel's

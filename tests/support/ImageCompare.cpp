@@ -2,6 +2,7 @@
 #include "ImageCompare.h"
 
 #include "TestPaths.h"
+#include "core/compression/CompressionMetrics.h"
 #include "core/image/ImageIO.h"
 
 #include <algorithm>
@@ -11,6 +12,10 @@
 #include <fstream>
 
 namespace relief::test {
+
+double decodedPsnr(const core::Image& map, const core::CompressedTexture& texture) {
+  return core::measureImageError(map, core::decodeAsMap(texture).value()).psnr;
+}
 
 ImageDifference compareImages(const core::Image& a, const core::Image& b) {
   ImageDifference difference;

@@ -2,6 +2,7 @@
 // baseline check that writes the actual and a difference image when it fails.
 #pragma once
 
+#include "core/compression/Compressor.h"
 #include "core/image/Image.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,9 @@ struct ImageDifference {
 };
 
 ImageDifference compareImages(const core::Image& a, const core::Image& b);
+
+// PSNR of `texture`'s level 0, decoded as a map, against `map`.
+double decodedPsnr(const core::Image& map, const core::CompressedTexture& texture);
 
 // Reference texels as the conformance scripts write them: a file of float32 values, row by row,
 // channels interleaved (empty when the file cannot be read).
