@@ -42,6 +42,7 @@ class ChooseForMeTest : public MainWindowFixture {
   ui::ChooseForMeDialog* dialog() {
     ui::ChooseForMeDialog* chooser = panel()->chooseForMeDialog();
     chooser->setCliPath(QStringLiteral(RELIEF_CLI_PATH));
+    chooser->setViewSize(QSize(128, 96));  // what the test checks does not depend on the size
     return chooser;
   }
   // Runs the dialog's choice to its end; returns how often a 10 ms timer ticked meanwhile.

@@ -193,6 +193,10 @@ void ChooseForMeDialog::choose() {
             << QStringLiteral("--zstd") << QString::number(kZstdLevel)
             << QStringLiteral("--out-dir") << m_folder->filePath(QStringLiteral("chosen"))
             << QStringLiteral("--json") << QStringLiteral("--progress-lines");
+  if (!m_viewSize.isEmpty()) {
+    arguments << QStringLiteral("--size")
+              << QStringLiteral("%1x%2").arg(m_viewSize.width()).arg(m_viewSize.height());
+  }
   if (!m_process) {
     m_process = new QProcess(this);
     connect(m_process, &QProcess::readyReadStandardError, this, &ChooseForMeDialog::readProgress);

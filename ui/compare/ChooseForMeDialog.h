@@ -16,6 +16,7 @@
 #include <QDialog>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSize>
 
 #include <map>
 #include <memory>
@@ -39,6 +40,9 @@ class ChooseForMeDialog : public QDialog {
 
   // The relief-cli run: beside the editor's executable (where both are installed and built).
   void setCliPath(const QString& path) { m_cliPath = path; }
+  // The size the CLI renders its three views at (`--size`); empty: the CLI's default, 320x240.
+  // Smaller is coarser and quicker (the GUI tests choose on 128x96 views).
+  void setViewSize(const QSize& size) { m_viewSize = size; }
 
   QComboBox* goalBox() const { return m_goal; }
   QDoubleSpinBox* valueBox() const { return m_value; }
@@ -78,6 +82,7 @@ class ChooseForMeDialog : public QDialog {
   MaterialDocument* m_document;
   ViewDocument* m_view;
   QString m_cliPath;
+  QSize m_viewSize;
   QComboBox* m_goal;
   QDoubleSpinBox* m_value;
   QComboBox* m_device;
