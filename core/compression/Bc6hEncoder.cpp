@@ -238,7 +238,7 @@ int quantize(float target, int bits, bool isSigned) {
   return best;
 }
 
-struct Candidate {
+struct Bc6hCandidate {
   Bc6hBlock block;
   int q[4][3] = {};  // the endpoints as stored values (before deltas)
   float error = std::numeric_limits<float>::max();
@@ -331,7 +331,7 @@ void writeFields(const Bc6hMode& mode, const int q[4][3], Bc6hBlock& block) {
 // index needs its top bit is flipped (endpoints swapped, indices mirrored: the palette mirrors
 // exactly, the interpolation being symmetric) when the flipped deltas still fit, otherwise its
 // anchor keeps to the low half.
-void evaluate(const Texels& texels, Candidate& candidate) {
+void evaluate(const Texels& texels, Bc6hCandidate& candidate) {
   const Bc6hMode& mode = kBc6hModes[candidate.block.mode];
   const int partition = candidate.block.partition;
   std::uint8_t* indices = candidate.block.indices;
@@ -364,7 +364,7 @@ void evaluate(const Texels& texels, Candidate& candidate) {
 // each subset first ordered so that its anchor texel lies nearer its first endpoint (its index
 // then needs no top bit). False when the mode cannot store the deltas.
 bool quantizeForMode(const Texels& texels, int modeIndex, int partition, const Endpoints* ends,
-                     Candidate& candidate) {
+                     Bc6hCandidate& candidate) {
   const Bc6hMode& mode = kBc6hModes[modeIndex];
   candidate.block.mode = modeIndex;
   candidate.block.partition = partition;
@@ -390,13 +390,13 @@ bool quantizeForMode(const Texels& texels, int modeIndex, int partition, const E
 // (a finer grid of the same shape loses nothing), evaluated; the best is kept in `best`. The
 // untransformed modes (3: ten bits, one subset; 30: six bits, two) always fit.
 void tryModes(const Texels& texels, int subsets, int partition, const Endpoints* ends,
-              Candidate& best) {
+              Bc6hCandidate& best) {
   const int first = subsets == 2 ? 0 : 10, last = subsets == 2 ? 10 : kBc6hModeCount;
   int finest = 0;
-  Candidate fitting[10];
+  Bc6hCandidate fitting[10];
   int count = 0;
   for (int mode = first; mode < last; ++mode) {
-    Candidate candidate;
+    Bc6hCandidate candidate;
     if (!quantizeForMode(texels, mode, partition, ends, candidate))
       continue;
     const int bits = kBc6hModes[mode].endpointBits;
@@ -416,7 +416,7 @@ void tryModes(const Texels& texels, int subsets, int partition, const Endpoints*
 }
 
 // Least squares endpoints for a block's own indices (its subsets and weights), continuous.
-void refitToIndices(const Texels& texels, const Candidate& candidate, Endpoints* ends) {
+void refitToIndices(const Texels& texels, const Bc6hCandidate& candidate, Endpoints* ends) {
   const Bc6hBlock& block = candidate.block;
   const Bc6hMode& mode = kBc6hModes[block.mode];
   const int indexBits = mode.subsets == 2 ? 3 : 4;
@@ -455,7 +455,7 @@ void refitToIndices(const Texels& texels, const Candidate& candidate, Endpoints*
 // Nudges each stored endpoint channel of the winner a step up or down, keeping a step that
 // lowers the error (the quantised optimum is seldom the rounded continuous one). `rounds`
 // sweeps over the channels.
-void refineStoredEndpoints(const Texels& texels, int rounds, Candidate& best) {
+void refineStoredEndpoints(const Texels& texels, int rounds, Bc6hCandidate& best) {
   const Bc6hMode& mode = kBc6hModes[best.block.mode];
   const auto [low, high] = storedRange(mode, texels.isSigned);
   for (int round = 0; round < rounds; ++round) {
@@ -463,7 +463,7 @@ void refineStoredEndpoints(const Texels& texels, int rounds, Candidate& best) {
     for (int e = 0; e < mode.subsets * 2; ++e) {
       for (int c = 0; c < 3; ++c) {
         for (int step : {-1, 1}) {
-          Candidate trial = best;
+          Bc6hCandidate trial = best;
           trial.q[e][c] = std::clamp(trial.q[e][c] + step, low, high);
           if (trial.q[e][c] == best.q[e][c] || !deltasFit(mode, trial.q))
             continue;
@@ -510,7 +510,7 @@ void encodeBc6hBlock(bool isSigned, CompressionQuality quality, const BlockTexel
       texels.value[texel][c] = interpolationTarget(input[texel][c], isSigned);
   }
   const Effort effort = effortFor(quality);
-  Candidate best;
+  Bc6hCandidate best;
 
   // One subset: modes 3, 7, 11, 15.
   Endpoints whole[1];

@@ -26,7 +26,7 @@ struct Texels {
   float weight[16];
 };
 
-struct Candidate {
+struct TAndHCandidate {
   bool hMode = false;
   std::array<int, 3> c1{}, c2{};  // 4-bit colours, 0..15 per channel
   int distance = 0;               // index into kEtc2Distances
@@ -38,7 +38,7 @@ int quantise4(float value) {
 
 // The four paint colours as the decoder computes them (4-bit colours extended by x17, the
 // distance added per channel and clamped to 0..255).
-void paintColours(const Candidate& c, float paint[4][3]) {
+void paintColours(const TAndHCandidate& c, float paint[4][3]) {
   const int d = kEtc2Distances[c.distance];
   for (int ch = 0; ch < 3; ++ch) {
     const int one = c.c1[ch] * 17, two = c.c2[ch] * 17;
@@ -58,7 +58,7 @@ void paintColours(const Candidate& c, float paint[4][3]) {
 
 // Squared error of the block when each texel takes its nearest paint colour; the choices go to
 // `index`.
-float assignmentError(const Texels& texels, const Candidate& c, int index[16]) {
+float assignmentError(const Texels& texels, const TAndHCandidate& c, int index[16]) {
   float paint[4][3];
   paintColours(c, paint);
   float total = 0.0f;
@@ -83,7 +83,7 @@ float assignmentError(const Texels& texels, const Candidate& c, int index[16]) {
 // Least-squares colours for the texels' current choices: each colour is the mean of the texels
 // that chose one of its paint colours, less the offset (+d, 0 or -d) that colour adds. A colour
 // no texel chose keeps its value.
-Candidate refit(const Texels& texels, const Candidate& c, const int index[16]) {
+TAndHCandidate refit(const Texels& texels, const TAndHCandidate& c, const int index[16]) {
   const float d = float(kEtc2Distances[c.distance]);
   // Which colour (0: c1, 1: c2) and which offset each paint index stands for.
   const int owner[2][4] = {{0, 1, 1, 1}, {0, 0, 1, 1}};
@@ -96,7 +96,7 @@ Candidate refit(const Texels& texels, const Candidate& c, const int index[16]) {
     for (int ch = 0; ch < 3; ++ch)
       sum[o][ch] += texels.weight[t] * (texels.value[ch][t] - offset[mode][k]);
   }
-  Candidate out = c;
+  TAndHCandidate out = c;
   for (int ch = 0; ch < 3; ++ch) {
     if (count[0] > 0.0f)
       out.c1[ch] = quantise4(sum[0][ch] / count[0]);
@@ -113,13 +113,13 @@ int colourKey(const std::array<int, 3>& c) {
   return c[0] << 8 | c[1] << 4 | c[2];
 }
 
-bool expressible(const Candidate& c) {
+bool expressible(const TAndHCandidate& c) {
   return !c.hMode || colourKey(c.c1) != colourKey(c.c2) || (c.distance & 1) == 1;
 }
 
 // Bit layouts as the decoder reads them (EtcCodec.cpp); the free bits select the mode
 // (Etc2BlockBits.h).
-void pack(Candidate c, int index[16], std::uint8_t out[8]) {
+void pack(TAndHCandidate c, int index[16], std::uint8_t out[8]) {
   std::uint64_t word = std::uint64_t(1) << 33;
   if (c.hMode) {
     if (((colourKey(c.c1) >= colourKey(c.c2)) ? 1 : 0) != (c.distance & 1)) {
@@ -246,7 +246,7 @@ constexpr int kRefittedDistances = 2;
 
 // The candidates a split of the block into two groups seeds: each group's mean colour at 4 bits,
 // as H with the two groups and as T with either group as the lone colour.
-std::array<Candidate, 3> seedsForSplit(const Texels& texels, int split) {
+std::array<TAndHCandidate, 3> seedsForSplit(const Texels& texels, int split) {
   float mean[2][3] = {}, count[2] = {};
   for (int t = 0; t < 16; ++t) {
     const int group = (split >> t) & 1;
@@ -259,9 +259,9 @@ std::array<Candidate, 3> seedsForSplit(const Texels& texels, int split) {
     for (int ch = 0; ch < 3; ++ch)
       quantised[g][ch] = quantise4(mean[g][ch] / std::max(count[g], 1.0f));
   }
-  return {Candidate{true, quantised[0], quantised[1], 0},
-          Candidate{false, quantised[0], quantised[1], 0},
-          Candidate{false, quantised[1], quantised[0], 0}};
+  return {TAndHCandidate{true, quantised[0], quantised[1], 0},
+          TAndHCandidate{false, quantised[0], quantised[1], 0},
+          TAndHCandidate{false, quantised[1], quantised[0], 0}};
 }
 
 // The packed block's squared error judged by the decoder itself, in 0..255 units.
@@ -295,10 +295,10 @@ float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality q
   const bool best = quality == CompressionQuality::Best;
   const std::vector<int> splits = principalSplits(texels, validMask, best ? 3 : 1);
   const int refitted = best ? 8 : kRefittedDistances;
-  Candidate winner;
+  TAndHCandidate winner;
   float winnerError = std::numeric_limits<float>::max();
   int index[16];
-  const auto consider = [&](const Candidate& c) {
+  const auto consider = [&](const TAndHCandidate& c) {
     if (!expressible(c))
       return std::numeric_limits<float>::max();
     const float error = assignmentError(texels, c, index);
@@ -309,8 +309,8 @@ float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality q
     return error;
   };
   for (int split : splits) {
-    const std::array<Candidate, 3> seeds = seedsForSplit(texels, split);
-    for (Candidate seed : seeds) {
+    const std::array<TAndHCandidate, 3> seeds = seedsForSplit(texels, split);
+    for (TAndHCandidate seed : seeds) {
       // Every distance from the seed, then the most promising refitted.
       std::array<std::pair<float, int>, 8> byError;
       for (int distance = 0; distance < 8; ++distance) {
@@ -320,12 +320,12 @@ float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality q
       std::partial_sort(byError.begin(), byError.begin() + refitted, byError.end());
       for (int r = 0; r < refitted; ++r) {
         seed.distance = byError[std::size_t(r)].second;
-        Candidate current = seed;
+        TAndHCandidate current = seed;
         float error = byError[std::size_t(r)].first;
         // Refit while it helps (two rounds reach nearly all of the gain).
         for (int round = 0; round < 2 && error < std::numeric_limits<float>::max(); ++round) {
           assignmentError(texels, current, index);
-          const Candidate next = refit(texels, current, index);
+          const TAndHCandidate next = refit(texels, current, index);
           const float nextError = consider(next);
           if (nextError >= error)
             break;
@@ -342,7 +342,7 @@ float encodeEtc2TOrH(const float rgb[16][3], int validMask, CompressionQuality q
       for (int which = 0; which < 2; ++which) {
         for (int ch = 0; ch < 3; ++ch) {
           for (int step : {-1, 1}) {
-            Candidate trial = winner;
+            TAndHCandidate trial = winner;
             int& value = which == 0 ? trial.c1[ch] : trial.c2[ch];
             value = std::clamp(value + step, 0, 15);
             consider(trial);

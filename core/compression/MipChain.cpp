@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 namespace relief::core::inline compression {
 namespace {
@@ -62,7 +63,6 @@ Image boxDown(const Image& image, Decode decode, Encode encode) {
   return out;
 }
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kKaiserAlpha = 4.0;
 constexpr double kKaiserWidth = 3.0;  // destination texels on each side
 
@@ -93,7 +93,8 @@ KaiserTaps kaiserTaps(int d, int from, int to) {
   double total = 0.0;
   for (int s = int(std::ceil(centre - radius)); s <= int(std::floor(centre + radius)); ++s) {
     const double t = (s - centre) / scale;
-    const double sinc = std::abs(t) < 1e-9 ? 1.0 : std::sin(kPi * t) / (kPi * t);
+    const double sinc =
+        std::abs(t) < 1e-9 ? 1.0 : std::sin(std::numbers::pi * t) / (std::numbers::pi * t);
     const double x = t / kKaiserWidth;
     const double window =
         besselI0(kKaiserAlpha * std::sqrt(std::max(0.0, 1.0 - x * x))) / besselI0(kKaiserAlpha);

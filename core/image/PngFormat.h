@@ -3,12 +3,20 @@
 // specification (ISO/IEC 15948, third edition) defines them. Internal to core/image.
 #pragma once
 
+#include "core/base/Result.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 
 namespace relief::core::inline image::png {
+
+// The reader's and the verifier's one message for pixel data that does not inflate or unfilter.
+inline Error damagedPixelData(const std::string& path, const std::string& what) {
+  return makeError(path + ": the pixel data is damaged or truncated (" + what + ")");
+}
 
 inline constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 

@@ -36,10 +36,6 @@ struct Palette {
   std::uint8_t rgba[256][4] = {};
 };
 
-Error damaged(const std::string& path, const std::string& what) {
-  return makeError(path + ": the pixel data is damaged or truncated (" + what + ")");
-}
-
 // What the chunk walk found: the header, the palette and its alphas, and how many bytes of IDAT
 // payload now lie together at the front of the file's buffer.
 struct PngChunks {
@@ -62,18 +58,19 @@ Result<std::optional<PngChunks>> walkChunks(const std::string& path,
   while (at + 12 <= bytes.size() && !sawEnd) {
     const std::uint32_t length = bigEndian32(&bytes[at]);
     if (length > 0x7fffffffu || std::size_t(length) + 12 > bytes.size() - at)
-      return damaged(path, "a chunk runs past the end of the file");
+      return png::damagedPixelData(path, "a chunk runs past the end of the file");
     const std::uint8_t* type = &bytes[at + 4];
     const std::uint8_t* data = type + 4;
     const std::uint32_t storedCrc = bigEndian32(data + length);
     const bool critical = (type[0] & 0x20) == 0;  // upper-case first letter
     if (critical && libdeflate_crc32(0, type, length + 4) != storedCrc) {
-      return damaged(path, "the CRC of chunk \"" + std::string(type, type + 4) + "\" at byte " +
-                               std::to_string(at) + " does not match");
+      return png::damagedPixelData(path, "the CRC of chunk \"" + std::string(type, type + 4) +
+                                             "\" at byte " + std::to_string(at) +
+                                             " does not match");
     }
     if (std::memcmp(type, "IHDR", 4) == 0) {
       if (length != 13)
-        return damaged(path, "the IHDR chunk is not 13 bytes");
+        return png::damagedPixelData(path, "the IHDR chunk is not 13 bytes");
       header.width = bigEndian32(data);
       header.height = bigEndian32(data + 4);
       header.bitDepth = data[8];
@@ -86,7 +83,8 @@ Result<std::optional<PngChunks>> walkChunks(const std::string& path,
       chunks.compressed += length;
     } else if (std::memcmp(type, "PLTE", 4) == 0) {
       if (length % 3 != 0 || length / 3 > 256 || length == 0)
-        return damaged(path, "the palette (PLTE) has " + std::to_string(length) + " bytes");
+        return png::damagedPixelData(path,
+                                     "the palette (PLTE) has " + std::to_string(length) + " bytes");
       palette.entries = int(length / 3);
       for (int i = 0; i < palette.entries; ++i) {
         std::memcpy(palette.rgba[i], data + 3 * i, 3);
@@ -96,7 +94,8 @@ Result<std::optional<PngChunks>> walkChunks(const std::string& path,
       if (header.colourType != 3)
         return std::optional<PngChunks>();  // colour-key transparency of grey or RGB: OpenImageIO's
       if (length > std::uint32_t(palette.entries))
-        return damaged(path, "the transparency chunk (tRNS) has more entries than the palette");
+        return png::damagedPixelData(
+            path, "the transparency chunk (tRNS) has more entries than the palette");
       for (std::uint32_t i = 0; i < length; ++i)
         palette.rgba[i][3] = data[i];
       palette.hasAlpha = true;
@@ -121,10 +120,11 @@ Status inflateStream(const std::string& path, const std::vector<std::uint8_t>& b
   const libdeflate_result result = libdeflate_zlib_decompress(
       inflater.get(), bytes.data(), compressed, raw, inflatedBytes, nullptr);
   if (result != LIBDEFLATE_SUCCESS) {
-    return damaged(path, result == LIBDEFLATE_SHORT_OUTPUT ? "the zlib stream ends early"
-                         : result == LIBDEFLATE_INSUFFICIENT_SPACE
-                             ? "the zlib stream holds more than the image"
-                             : "the zlib stream is corrupt");
+    return png::damagedPixelData(path, result == LIBDEFLATE_SHORT_OUTPUT
+                                           ? "the zlib stream ends early"
+                                       : result == LIBDEFLATE_INSUFFICIENT_SPACE
+                                           ? "the zlib stream holds more than the image"
+                                           : "the zlib stream is corrupt");
   }
   return {};
 }
@@ -153,8 +153,9 @@ Status convertRows(const std::string& path, const Header& header, const Palette&
     const std::uint8_t filter = line[0];
     std::memcpy(row, line + 1, rowBytes);
     if (!unfilterRow(filter, row, above, rowBytes, bytesPerPixel)) {
-      return damaged(path, "row " + std::to_string(y) + " has the unknown filter type " +
-                               std::to_string(int(filter)));
+      return png::damagedPixelData(path, "row " + std::to_string(y) +
+                                             " has the unknown filter type " +
+                                             std::to_string(int(filter)));
     }
     float* target = image.pixel(0, int(y));
     if (indexed) {
@@ -162,10 +163,10 @@ Status convertRows(const std::string& path, const Header& header, const Palette&
         const int index = depth == 8 ? row[x] : packedSample(row, x);
         // An index past the palette's end is an error (section 11.2.3); libpng reads it as black.
         if (index >= palette.entries) {
-          return damaged(path, "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                   ") uses palette index " + std::to_string(index) +
-                                   "; the palette has " + std::to_string(palette.entries) +
-                                   " entries");
+          return png::damagedPixelData(path, "pixel (" + std::to_string(x) + ", " +
+                                                 std::to_string(y) + ") uses palette index " +
+                                                 std::to_string(index) + "; the palette has " +
+                                                 std::to_string(palette.entries) + " entries");
         }
         for (int c = 0; c < channels; ++c)
           *target++ = float(palette.rgba[index][c]) * (1.0f / 255.0f);
@@ -217,7 +218,7 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
     return PngFastDecode::NotHandled;
   const bool indexed = header.colourType == 3;
   if (indexed && palette.entries == 0)
-    return damaged(path, "a palette image without a palette (PLTE)");
+    return png::damagedPixelData(path, "a palette image without a palette (PLTE)");
   // Palette images expand to RGB, or RGBA when tRNS gives alphas, as libpng expands them.
   const int channels = indexed ? (palette.hasAlpha ? 4 : 3) : samples;
   if (header.width != std::uint32_t(image.width()) ||
@@ -229,7 +230,7 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
   const std::size_t rowBytes = (bitsPerPixel * header.width + 7) / 8;
   const std::size_t inflatedBytes = (rowBytes + 1) * header.height;
   if (compressed == 0)
-    return damaged(path, "no IDAT chunk");
+    return png::damagedPixelData(path, "no IDAT chunk");
 
   // The stream is inflated into the tail of the image's own float buffer (a row of floats never
   // takes fewer bytes than the row it is decoded from plus its filter byte), then each row is

@@ -18,10 +18,6 @@
 namespace relief::core::inline image {
 namespace {
 
-Error damaged(const std::string& path, const std::string& what) {
-  return makeError(path + ": the pixel data is damaged or truncated (" + what + ")");
-}
-
 // Takes the inflated stream in pieces and checks it row by row: filter types, and for palette
 // images each index (which needs the rows unfiltered).
 class RowChecker {
@@ -148,7 +144,7 @@ Status verifyPngData(const std::string& path, const PngHeader& header) {
     for (std::uint32_t left = length; left > 0;) {
       const std::uint32_t n = std::min<std::uint32_t>(left, std::uint32_t(piece.size()));
       if (!file.read(reinterpret_cast<char*>(piece.data()), n))
-        return damaged(path, "the file ends inside chunk \"" + type + "\"");
+        return png::damagedPixelData(path, "the file ends inside chunk \"" + type + "\"");
       crc = crc32(crc, piece.data(), n);
       left -= n;
       if (type == "PLTE")
@@ -164,19 +160,19 @@ Status verifyPngData(const std::string& path, const PngHeader& header) {
         stream.avail_out = uInt(inflated.size());
         const int status = inflate(&stream, Z_NO_FLUSH);
         if (status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR)
-          return damaged(path, "the zlib stream is corrupt");
+          return png::damagedPixelData(path, "the zlib stream is corrupt");
         if (std::string problem = rows->take(inflated.data(), inflated.size() - stream.avail_out);
             !problem.empty())
-          return damaged(path, problem);
+          return png::damagedPixelData(path, problem);
         streamEnded = status == Z_STREAM_END;
       } while (!streamEnded && (stream.avail_in > 0 || stream.avail_out == 0));
     }
     std::uint8_t stored[4];
     if (!file.read(reinterpret_cast<char*>(stored), 4))
-      return damaged(path, "the file ends inside chunk \"" + type + "\"");
+      return png::damagedPixelData(path, "the file ends inside chunk \"" + type + "\"");
     if (critical && crc != png::bigEndian32(stored)) {
-      return damaged(path, "the CRC of chunk \"" + type + "\" at byte " + std::to_string(at) +
-                               " does not match");
+      return png::damagedPixelData(path, "the CRC of chunk \"" + type + "\" at byte " +
+                                             std::to_string(at) + " does not match");
     }
     if (type == "PLTE")
       paletteEntries = int(std::min<std::size_t>(256, palette.size() / 3));
@@ -184,11 +180,11 @@ Status verifyPngData(const std::string& path, const PngHeader& header) {
     at += 12 + std::uintmax_t(length);
   }
   if (!rows)
-    return damaged(path, "no IDAT chunk");
+    return png::damagedPixelData(path, "no IDAT chunk");
   if (!streamEnded)
-    return damaged(path, "the zlib stream ends early");
+    return png::damagedPixelData(path, "the zlib stream ends early");
   if (!rows->complete())
-    return damaged(path, "the zlib stream ends before the last row");
+    return png::damagedPixelData(path, "the zlib stream ends before the last row");
   return {};
 }
 

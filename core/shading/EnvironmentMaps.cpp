@@ -6,6 +6,7 @@
 #include "core/compression/TextureFile.h"
 #include "core/generators/ImageFilters.h"
 #include "core/image/ImageIO.h"
+#include "core/shading/Brdf.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -20,8 +21,6 @@
 
 namespace relief::core::inline shading {
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 struct BuiltInInfo {
   BuiltInEnvironment environment;
