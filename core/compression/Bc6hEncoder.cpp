@@ -139,13 +139,6 @@ float lineResidual(const Texels& texels, int subsets, int partition, int subset)
 
 using Endpoints = float[2][3];
 
-// Interpolation weights of 64 for 3- and 4-bit indices (the specification's, as BC7's).
-constexpr int kWeights3[8] = {0, 9, 18, 27, 37, 46, 55, 64};
-constexpr int kWeights4[16] = {0, 4, 9, 13, 17, 21, 26, 30, 34, 38, 43, 47, 51, 55, 60, 64};
-int weightOf(int index, int indexBits) {
-  return indexBits == 3 ? kWeights3[index] : kWeights4[index];
-}
-
 // The continuous endpoints of one subset: its principal axis between the extreme projections,
 // then `refits` rounds of least squares against the nearest weights.
 void fitSubset(const Texels& texels, int subsets, int partition, int subset, int indexBits,
@@ -182,7 +175,7 @@ void fitSubset(const Texels& texels, int subsets, int partition, int subset, int
       int bestIndex = 0;
       float bestError = std::numeric_limits<float>::max();
       for (int index = 0; index < entries; ++index) {
-        const float w = float(weightOf(index, indexBits)) / 64.0f;
+        const float w = float(bc7Weight(index, indexBits)) / 64.0f;
         float error = 0.0f;
         for (int c = 0; c < 3; ++c) {
           const float d = out[0][c] + (out[1][c] - out[0][c]) * w - v[c];
@@ -193,7 +186,7 @@ void fitSubset(const Texels& texels, int subsets, int partition, int subset, int
           bestIndex = index;
         }
       }
-      const float w = float(weightOf(bestIndex, indexBits)) / 64.0f;
+      const float w = float(bc7Weight(bestIndex, indexBits)) / 64.0f;
       a += (1 - w) * (1 - w);
       b += (1 - w) * w;
       cc += w * w;
@@ -244,10 +237,6 @@ struct Bc6hCandidate {
   float error = std::numeric_limits<float>::max();
 };
 
-bool isAnchor(int subsets, int partition, int texel) {
-  return texel == 0 || (subsets == 2 && bc7Anchor(2, partition, 1) == texel);
-}
-
 // Indices against the palette the decoder builds from stored endpoints `q`; anchors limited to
 // the low half when `anchorsFixed`. Returns the squared error.
 float chooseIndices(const Texels& texels, const Bc6hMode& mode, int partition, const int q[4][3],
@@ -262,7 +251,7 @@ float chooseIndices(const Texels& texels, const Bc6hMode& mode, int partition, c
       u1[c] = bc6hUnquantize(q[subset * 2 + 1][c], mode.endpointBits, texels.isSigned);
     }
     for (int index = 0; index < entries; ++index) {
-      const int w = weightOf(index, indexBits);
+      const int w = bc7Weight(index, indexBits);
       for (int c = 0; c < 3; ++c)
         palette[subset][index][c] = float(bc7Interpolate(u0[c], u1[c], w));
     }
@@ -271,7 +260,7 @@ float chooseIndices(const Texels& texels, const Bc6hMode& mode, int partition, c
   for (int texel = 0; texel < 16; ++texel) {
     const int subset = subsetOf(mode.subsets, partition, texel);
     const int limit =
-        anchorsFixed && isAnchor(mode.subsets, partition, texel) ? entries / 2 : entries;
+        anchorsFixed && bc7IsAnchor(mode.subsets, partition, texel) ? entries / 2 : entries;
     int bestIndex = 0;
     float bestError = std::numeric_limits<float>::max();
     for (int index = 0; index < limit; ++index) {
@@ -433,7 +422,7 @@ void refitToIndices(const Texels& texels, const Bc6hCandidate& candidate, Endpoi
       if (!(texels.validMask >> texel & 1) ||
           subsetOf(mode.subsets, block.partition, texel) != subset)
         continue;
-      const float w = float(weightOf(block.indices[texel], indexBits)) / 64.0f;
+      const float w = float(bc7Weight(block.indices[texel], indexBits)) / 64.0f;
       a += (1 - w) * (1 - w);
       b += (1 - w) * w;
       cc += w * w;
@@ -480,13 +469,13 @@ void refineStoredEndpoints(const Texels& texels, int rounds, Bc6hCandidate& best
   }
 }
 
-struct Effort {
+struct Bc6hEffort {
   int partitions;    // two-subset partitions fitted, best ranked first
   int refits;        // least-squares rounds of each continuous fit
   int refineRounds;  // sweeps of refineStoredEndpoints over the winner
 };
 
-Effort effortFor(CompressionQuality quality) {
+Bc6hEffort effortFor(CompressionQuality quality) {
   switch (quality) {
     case CompressionQuality::Fast:
       return {2, 1, 0};
@@ -509,7 +498,7 @@ void encodeBc6hBlock(bool isSigned, CompressionQuality quality, const BlockTexel
     for (int c = 0; c < 3; ++c)
       texels.value[texel][c] = interpolationTarget(input[texel][c], isSigned);
   }
-  const Effort effort = effortFor(quality);
+  const Bc6hEffort effort = effortFor(quality);
   Bc6hCandidate best;
 
   // One subset: modes 3, 7, 11, 15.

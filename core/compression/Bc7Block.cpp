@@ -50,10 +50,6 @@ constexpr std::uint8_t kAnchor3[2][64] = {
         3,  6, 6, 8,  15, 3,  15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 3,  15, 15, 8,
     }};
 
-constexpr int kWeights2[4] = {0, 21, 43, 64};
-constexpr int kWeights3[8] = {0, 9, 18, 27, 37, 46, 55, 64};
-constexpr int kWeights4[16] = {0, 4, 9, 13, 17, 21, 26, 30, 34, 38, 43, 47, 51, 55, 60, 64};
-
 // The 128 bits, least significant bit first (bit 0 is bit 0 of byte 0).
 class BitWriter {
  public:
@@ -88,15 +84,15 @@ class BitReader {
   int m_position = 0;
 };
 
-bool isAnchor(int subsets, int partition, int texel) {
+}  // namespace
+
+bool bc7IsAnchor(int subsets, int partition, int texel) {
   for (int subset = 0; subset < subsets; ++subset) {
     if (bc7Anchor(subsets, partition, subset) == texel)
       return true;
   }
   return false;
 }
-
-}  // namespace
 
 int bc7Subset(int subsets, int partition, int texel) {
   switch (subsets) {
@@ -113,17 +109,6 @@ int bc7Anchor(int subsets, int partition, int subset) {
   if (subset == 0)
     return 0;
   return subsets == 2 ? kAnchor2[partition] : kAnchor3[subset - 1][partition];
-}
-
-int bc7Weight(int index, int indexBits) {
-  switch (indexBits) {
-    case 2:
-      return kWeights2[index];
-    case 3:
-      return kWeights3[index];
-    default:
-      return kWeights4[index];
-  }
 }
 
 int bc7EndpointValue(const Bc7Block& block, int subset, int endpoint, int channel) {
@@ -162,7 +147,7 @@ void packBc7Block(const Bc7Block& block, std::uint8_t out[16]) {
     }
   }
   for (int texel = 0; texel < 16; ++texel) {
-    const bool anchor = isAnchor(mode.subsets, block.partition, texel);
+    const bool anchor = bc7IsAnchor(mode.subsets, block.partition, texel);
     bits.put(block.indices[texel], mode.indexBits - (anchor ? 1 : 0));
   }
   if (mode.secondaryIndexBits) {
@@ -199,7 +184,7 @@ bool unpackBc7Block(const std::uint8_t in[16], Bc7Block& block) {
     }
   }
   for (int texel = 0; texel < 16; ++texel) {
-    const bool anchor = isAnchor(mode.subsets, block.partition, texel);
+    const bool anchor = bc7IsAnchor(mode.subsets, block.partition, texel);
     block.indices[texel] = std::uint8_t(bits.take(mode.indexBits - (anchor ? 1 : 0)));
   }
   if (mode.secondaryIndexBits) {

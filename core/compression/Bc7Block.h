@@ -46,8 +46,19 @@ struct Bc7Block {
 int bc7Subset(int subsets, int partition, int texel);
 // The anchor texel of a subset: 0 for subset 0, else from the specification's anchor tables.
 int bc7Anchor(int subsets, int partition, int subset);
+// Whether a texel is the anchor of one of its partition's subsets (its index drops the top bit).
+bool bc7IsAnchor(int subsets, int partition, int texel);
+// The interpolation weights (of 64) of indices with 2, 3 and 4 bits (BC6H uses the same).
+inline constexpr int kBc7Weights2[4] = {0, 21, 43, 64};
+inline constexpr int kBc7Weights3[8] = {0, 9, 18, 27, 37, 46, 55, 64};
+inline constexpr int kBc7Weights4[16] = {0,  4,  9,  13, 17, 21, 26, 30,
+                                         34, 38, 43, 47, 51, 55, 60, 64};
 // The interpolation weight (of 64) of an index with 2, 3 or 4 bits.
-int bc7Weight(int index, int indexBits);
+inline int bc7Weight(int index, int indexBits) {
+  return indexBits == 2   ? kBc7Weights2[index]
+         : indexBits == 3 ? kBc7Weights3[index]
+                          : kBc7Weights4[index];
+}
 // ((64 - w) e0 + w e1 + 32) >> 6, the specification's interpolation.
 inline int bc7Interpolate(int e0, int e1, int weight) {
   return ((64 - weight) * e0 + weight * e1 + 32) >> 6;

@@ -1,42 +1,9 @@
 // Image storage; see Image.h.
 #include "core/image/Image.h"
 
-#include <sys/mman.h>
-
 #include <cassert>
-#include <cstdlib>
-#include <new>
 
 namespace relief::core::inline image {
-
-namespace {
-
-// Rasters from this size up are aligned to and advised as huge pages (x86-64's 2 MiB).
-constexpr std::size_t kHugePage = std::size_t(2) << 20;
-constexpr std::size_t kHugeFrom = 4 * kHugePage;
-
-}  // namespace
-
-float* Image::UnsetAllocator::allocate(std::size_t count) {
-  const std::size_t bytes = count * sizeof(float);
-  if (bytes < kHugeFrom)
-    return std::allocator<float>::allocate(count);
-  const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-  void* memory = std::aligned_alloc(kHugePage, rounded);
-  if (!memory)
-    throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-  madvise(memory, rounded, MADV_HUGEPAGE);  // advice only: a failure changes nothing
-#endif
-  return static_cast<float*>(memory);
-}
-
-void Image::UnsetAllocator::deallocate(float* values, std::size_t count) noexcept {
-  if (count * sizeof(float) < kHugeFrom)
-    std::allocator<float>::deallocate(values, count);
-  else
-    std::free(values);
-}
 
 Image::Image(int width, int height, int channels, ColorSpace colorSpace)
     : m_width(width), m_height(height), m_channels(channels), m_colorSpace(colorSpace) {

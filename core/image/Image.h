@@ -3,14 +3,13 @@
 // as the file encodes them (sRGB colour stays sRGB-encoded) and never quantised on the way.
 #pragma once
 
+#include "core/base/LargeBuffer.h"
 #include "core/image/ColorSpace.h"
 
 #include <cstddef>
 #include <memory>
 #include <optional>
 #include <string_view>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace relief::core::inline image {
@@ -63,32 +62,14 @@ class Image {
            std::size_t(channel);
   }
 
-  // The pixels' allocator. Value-initialisation (vector::resize) leaves floats unset (the
-  // constructor above still fills with zero explicitly), and large rasters are asked for in
-  // transparent huge pages: first touching a 192 MiB image in 4 KiB pages costs a page fault
-  // per page, a sixth of a whole 4096^2 `generate normal` on Linux with THP in madvise mode.
-  struct UnsetAllocator : std::allocator<float> {
-    template <class U>
-    struct rebind {
-      using other = std::conditional_t<std::is_same_v<U, float>, UnsetAllocator, std::allocator<U>>;
-    };
-    template <class U, class... Args>
-    void construct(U* place, Args&&... args) {
-      if constexpr (sizeof...(Args) == 0)
-        ::new (static_cast<void*>(place)) U;
-      else
-        ::new (static_cast<void*>(place)) U(std::forward<Args>(args)...);
-    }
-    float* allocate(std::size_t count);
-    void deallocate(float* values, std::size_t count) noexcept;
-  };
-
   int m_width = 0;
   int m_height = 0;
   int m_channels = 0;
   int m_sourceBits = 0;
   ColorSpace m_colorSpace = ColorSpace::Linear;
-  std::vector<float, UnsetAllocator> m_pixels;
+  // Unset until written (the constructor above fills with zero explicitly) and in huge pages when
+  // large: LargeBuffer.h says why.
+  std::vector<float, LargeBufferAllocator<float>> m_pixels;
 };
 
 // One channel of an image as a grey image of its size (linear, the source's bit depth): a
