@@ -188,7 +188,12 @@ Result<PngHeader> checkedHeader(const std::string& path, const PngChunkState& st
 }  // namespace
 
 Result<PngHeader> preflightPng(const std::string& path, std::uintmax_t fileBytes) {
-  std::ifstream file(path, std::ios::binary);
+  // Unbuffered: the walk reads 8 bytes a chunk and seeks past the data, and a buffered stream
+  // refills its whole buffer after every seek, reading the file's image data (a 2048^2 map's
+  // 8 KiB IDAT chunks: 6 MB in 700 reads) only to throw it away.
+  std::ifstream file;
+  file.rdbuf()->pubsetbuf(nullptr, 0);
+  file.open(path, std::ios::binary);
   std::uint8_t signature[8] = {};
   if (!file.read(reinterpret_cast<char*>(signature), 8) ||
       !std::equal(signature, signature + 8, png::kSignature))

@@ -267,5 +267,81 @@ TEST(PngReader, DamagedPixelDataIsRefusedWithTheReason) {
   }
 }
 
+// Rows are converted to floats on several threads, in waves whose floats cannot overwrite raw
+// rows still to be read (convertRows): a map large enough for several waves and a serial tail
+// decodes as libpng decodes it, and the first bad palette index in row order is the one named,
+// whichever thread met it first.
+TEST(PngReader, ConvertsLargeMapsInParallelWavesLikeLibpng) {
+  for (int channels : {1, 3}) {
+    const int width = 256, height = 300;
+    const std::string path = scratchFolder() + "/waves_" + std::to_string(channels) + ".png";
+    const std::vector<std::uint16_t> values = mixedContent(width, height, channels);
+    {
+      auto output = OIIO::ImageOutput::create(path);
+      ASSERT_TRUE(output);
+      ASSERT_TRUE(
+          output->open(path, OIIO::ImageSpec(width, height, channels, OIIO::TypeDesc::UINT8)));
+      ASSERT_TRUE(output->write_image(OIIO::TypeDesc::UINT16, values.data()));
+      ASSERT_TRUE(output->close());
+    }
+    int libpngChannels = 0;
+    const std::vector<float> expected = decodedByLibpng(path, libpngChannels);
+    Image image(width, height, channels);
+    const Result<PngFastDecode> decoded = decodePngPixels(path, image);
+    ASSERT_TRUE(decoded.ok()) << decoded.error();
+    ASSERT_EQ(decoded.value(), PngFastDecode::Decoded);
+    ASSERT_EQ(image.valueCount(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i)
+      ASSERT_EQ(image.data()[i], expected[i]) << path << " value " << i;
+  }
+
+  // A 200x300 palette image (four entries): its floats take 12 bytes a pixel against one raw
+  // byte, so the first wave converts rows 0-273 and rows 274-299 go one by one.
+  const int width = 200, height = 300;
+  const auto paletteImage = [&](const std::vector<std::array<int, 2>>& bad) {
+    std::vector<std::uint8_t> filtered;
+    for (int y = 0; y < height; ++y) {
+      filtered.push_back(0);
+      for (int x = 0; x < width; ++x) {
+        const bool isBad = std::find(bad.begin(), bad.end(), std::array<int, 2>{x, y}) != bad.end();
+        filtered.push_back(std::uint8_t(isBad ? 9 : (x + y) % 4));
+      }
+    }
+    return handMadePng(width, height, 3, filtered,
+                       {{"PLTE", {0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0, 255}}});
+  };
+  struct Case {
+    const char* name;
+    std::vector<std::array<int, 2>> bad;
+    const char* reason;
+  };
+  const Case cases[] = {
+      {"bad_in_wave.png", {{40, 200}, {3, 100}, {150, 260}}, "pixel (3, 100) uses palette index 9"},
+      {"bad_in_tail.png", {{5, 290}, {7, 295}}, "pixel (5, 290) uses palette index 9"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = scratchFolder() + "/" + c.name;
+    writeBytes(path, paletteImage(c.bad));
+    Image image(width, height, 3);
+    const Result<PngFastDecode> decoded = decodePngPixels(path, image);
+    ASSERT_FALSE(decoded.ok()) << c.name;
+    EXPECT_NE(decoded.error().find(std::string(c.reason) + "; the palette has 4 entries"),
+              std::string::npos)
+        << decoded.error();
+  }
+  const std::string good = scratchFolder() + "/palette_waves.png";
+  writeBytes(good, paletteImage({}));
+  Image image(width, height, 3);
+  const Result<PngFastDecode> decoded = decodePngPixels(good, image);
+  ASSERT_TRUE(decoded.ok()) << decoded.error();
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const int index = (x + y) % 4;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(image.at(x, y, c), index == c + 1 ? 1.0f : 0.0f) << x << ", " << y;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace relief::core
