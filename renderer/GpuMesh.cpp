@@ -33,6 +33,7 @@ void GpuMesh::upload(QOpenGLExtraFunctions& gl, const core::Mesh& mesh) {
   attribute(kAttribNormal, 3, offsetof(core::Vertex, normal));
   attribute(kAttribUv, 2, offsetof(core::Vertex, uv));
   attribute(kAttribTangent, 4, offsetof(core::Vertex, tangent));
+  attribute(kAttribUvScale, 2, offsetof(core::Vertex, uvScale));
 }
 
 void GpuMesh::draw(QOpenGLExtraFunctions& gl, GLenum mode, int primitivesPerDraw) {

@@ -15,7 +15,8 @@ enum VertexAttribute : unsigned {
   kAttribPosition = 0,
   kAttribNormal = 1,
   kAttribUv = 2,
-  kAttribTangent = 3
+  kAttribTangent = 3,
+  kAttribUvScale = 4
 };
 
 class GpuMesh {

@@ -26,6 +26,7 @@ in VertexData {
   vec2 uv;
   vec3 worldNormal;
   vec4 worldTangent;
+  vec2 uvScale;  // world units per unit of u and of v (core::Vertex::uvScale)
 } vIn;
 
 out vec4 fragColor;
@@ -57,15 +58,26 @@ void main() {
   vec2 dx = dFdx(entryUv);
   vec2 dy = dFdy(entryUv);
   UvToWorld uvFrame = uvToWorld(vIn.worldPosition, entryUv);
+  // Eye and light in the marches' (u, v, height) space: one depth in world units everywhere.
+  float heightToWorld = uWorldPerUv / uTiling;
+  vec2 uvScale = vIn.uvScale / uTiling;
+  vec3 eyeUvHeight = toUvHeightSpace(V, uvScale, heightToWorld);
+  vec3 marchV = normalize(eyeUvHeight);
+  vec3 marchL = normalize(toUvHeightSpace(L, uvScale, heightToWorld));
 #ifdef CURVED_SILHOUETTES
-  gSecondForm = secondFundamentalForm(frame.normal, entryUv, uvFrame);
+  vec3 worldForm = secondFundamentalForm(frame.normal, entryUv, uvFrame);
+  gCurvedRay = curvedRayOf(worldForm, eyeUvHeight, heightToWorld);
   // Curved meshes are taken as closed: where a ray leaves the front surface, the inside of the
   // back (drawn too, for open meshes) must not fill the gap. Flat parts keep both sides.
-  if (!facesEye && dot(abs(gSecondForm), vec3(1.0)) > 1e-3) discard;
+  if (!facesEye && dot(abs(worldForm), vec3(1.0)) > 1e-3 * max(heightToWorld, 1e-6)) discard;
 #endif
 
 #if DEBUG_VIEW == VIEW_RAY
-  fragColor = vec4(entryUv, V.xy);
+#ifdef ENGINE_PREVIEW
+  fragColor = vec4(entryUv, V.xy);  // an engine marches along the tangent frame's view
+#else
+  fragColor = vec4(entryUv, marchV.xy);
+#endif
   return;
 #endif
 
@@ -73,9 +85,11 @@ void main() {
 #ifdef ENGINE_PREVIEW
   // The engine's own trace, fade and all (engine_parallax.glsl); Relief's fade is not the
   // engine's. Scale and bias stay Relief's: the export's conversions make them the same relief.
+  // Engines march along the tangent frame's view and light, as the shading uses them.
   float scale = uHeightScale;
   float bias = uHeightBias;
   ParallaxResult visible = engineVisiblePoint(entryUv, V, dx, dy);
+  marchL = L;
 #else
   // Fade the relief out where the height map is read at a coarse mip level.
   float fade = uLodFade > 0.0 ? 1.0 - smoothstep(uLodFade - 1.0, uLodFade, mipLevel) : 1.0;
@@ -84,7 +98,7 @@ void main() {
 
   ParallaxResult visible;
   if (fade > 0.0) {
-    visible = findVisiblePoint(entryUv, V, dx, dy, scale, bias, mipLevel);
+    visible = findVisiblePoint(entryUv, marchV, dx, dy, scale, bias, mipLevel);
   } else {
     visible.uv = entryUv;
     visible.height = sampleHeight(entryUv, dx, dy);
@@ -101,14 +115,15 @@ void main() {
 #endif
 
   int samples = visible.samples;
-  float shadow = selfShadow(visible.uv, visible.height, L, dx, dy, scale, mipLevel, samples);
+  float shadow =
+      selfShadow(visible.uv, visible.height, marchL, dx, dy, scale, mipLevel, samples);
 
 #ifdef TECHNIQUE_DISPLACEMENT
   vec3 displaced = vIn.worldPosition;  // the tessellation stage moved the geometry there
 #else
   float surfaceHeight = visible.height * scale + bias;  // UV units above the mesh surface
   vec3 displaced = displacedWorldPosition(uvFrame, vIn.worldPosition, visible.uv - entryUv,
-                                          surfaceHeight, frame.normal);
+                                          surfaceHeight, frame.normal, heightToWorld);
 #endif
 #ifdef DEPTH_OFFSET
   vec4 clip = uViewProjection * vec4(displaced, 1.0);

@@ -16,6 +16,7 @@ in VertexData {
   vec2 uv;
   vec3 worldNormal;
   vec4 worldTangent;
+  vec2 uvScale;  // world units per unit of u and of v (core::Vertex::uvScale)
 } vIn[];
 
 out VertexData {
@@ -23,10 +24,10 @@ out VertexData {
   vec2 uv;
   vec3 worldNormal;
   vec4 worldTangent;
+  vec2 uvScale;  // world units per unit of u and of v (core::Vertex::uvScale)
 } vOut[];
 
 uniform vec2 uViewportSize;  // pixels
-uniform float uWorldPerUv;   // world units per unit of mesh UV (material.tese)
 
 const float kTargetEdgePixels = 4.0;
 const float kSegmentsPerTexel = 4.0;
@@ -71,6 +72,7 @@ void main() {
   vOut[gl_InvocationID].uv = vIn[gl_InvocationID].uv;
   vOut[gl_InvocationID].worldNormal = vIn[gl_InvocationID].worldNormal;
   vOut[gl_InvocationID].worldTangent = vIn[gl_InvocationID].worldTangent;
+  vOut[gl_InvocationID].uvScale = vIn[gl_InvocationID].uvScale;
   gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
   if (gl_InvocationID == 0 && outsideView()) {
     // An outer level of 0 drops the patch.

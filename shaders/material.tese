@@ -15,6 +15,7 @@ in VertexData {
   vec2 uv;
   vec3 worldNormal;
   vec4 worldTangent;
+  vec2 uvScale;  // world units per unit of u and of v (core::Vertex::uvScale)
 } vIn[];
 
 out VertexData {
@@ -22,9 +23,9 @@ out VertexData {
   vec2 uv;
   vec3 worldNormal;
   vec4 worldTangent;
+  vec2 uvScale;  // world units per unit of u and of v (core::Vertex::uvScale)
 } vOut;
 
-uniform float uWorldPerUv;  // world units per unit of mesh UV
 
 // Points inside the patch: the barycentric blend of its three vertices.
 vec2 blend(vec2 a, vec2 b, vec2 c) {
@@ -105,5 +106,6 @@ void main() {
   vOut.uv = uv;
   vOut.worldNormal = normal;
   vOut.worldTangent = blend(vIn[0].worldTangent, vIn[1].worldTangent, vIn[2].worldTangent);
+  vOut.uvScale = blend(vIn[0].uvScale, vIn[1].uvScale, vIn[2].uvScale);
   gl_Position = uViewProjection * vec4(position, 1.0);
 }

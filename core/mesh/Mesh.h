@@ -15,6 +15,10 @@ struct Vertex {
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   glm::vec2 uv{0.0f};
   glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};
+  // World units per unit of u and of v at the vertex (the lengths of dP/du and dP/dv, averaged
+  // over its triangles; computeUvScales): the parallax marches' texel shape (toUvHeightSpace in
+  // shaders/include/displaced_position.glsl). 0: unknown, the marches take texels as square.
+  glm::vec2 uvScale{0.0f};
 };
 
 struct Bounds {

@@ -60,6 +60,8 @@ Result<ImportedMesh> importMesh(const std::string& path) {
   }
   if (!result.tangentsFromFile)
     computeTangentFrames(mesh);
+  else
+    computeUvScales(mesh);
   return result;
 }
 

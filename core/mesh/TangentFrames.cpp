@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace relief::core::inline mesh {
 namespace {
@@ -17,7 +18,46 @@ glm::vec3 fallbackTangent(const glm::vec3& n) {
   return glm::normalize(t);
 }
 
+// Reference 004's per-triangle dP/du (T) and dP/dv (B): P = V - U, Q = W - U, (s1, t1) and
+// (s2, t2) their UV differences; [T; B] = 1 / (s1 t2 - s2 t1) * [t2 -t1; -s2 s1] * [P; Q].
+// False for degenerate UVs (the system has no solution; skipping keeps NaN and infinities out).
+bool triangleDerivatives(const Mesh& mesh, std::size_t first, glm::vec3& t, glm::vec3& b) {
+  const Vertex& u = mesh.vertices[mesh.indices[first]];
+  const Vertex& v = mesh.vertices[mesh.indices[first + 1]];
+  const Vertex& w = mesh.vertices[mesh.indices[first + 2]];
+  const glm::vec3 p = v.position - u.position;
+  const glm::vec3 q = w.position - u.position;
+  const float s1 = v.uv.x - u.uv.x, t1 = v.uv.y - u.uv.y;
+  const float s2 = w.uv.x - u.uv.x, t2 = w.uv.y - u.uv.y;
+  const float det = s1 * t2 - s2 * t1;
+  // The threshold is relative to the UV extent so tiny but valid triangles still count.
+  const float uvScale = std::max({std::abs(s1), std::abs(t1), std::abs(s2), std::abs(t2)});
+  if (!(std::abs(det) > 1e-12f * uvScale * uvScale) || !std::isfinite(det))
+    return false;
+  const float r = 1.0f / det;
+  t = (p * t2 - q * t1) * r;
+  b = (q * s1 - p * s2) * r;
+  return std::isfinite(glm::dot(t, t)) && std::isfinite(glm::dot(b, b));
+}
+
 }  // namespace
+
+void computeUvScales(Mesh& mesh) {
+  const std::size_t count = mesh.vertices.size();
+  std::vector<glm::vec2> sums(count, glm::vec2(0.0f));
+  std::vector<int> triangles(count, 0);
+  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    glm::vec3 t, b;
+    if (!triangleDerivatives(mesh, i, t, b))
+      continue;
+    for (std::size_t corner = i; corner < i + 3; ++corner) {
+      sums[mesh.indices[corner]] += glm::vec2(glm::length(t), glm::length(b));
+      ++triangles[mesh.indices[corner]];
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i)
+    mesh.vertices[i].uvScale = triangles[i] > 0 ? sums[i] / float(triangles[i]) : glm::vec2(0.0f);
+}
 
 void computeTangentFrames(Mesh& mesh) {
   const std::size_t count = mesh.vertices.size();
@@ -25,30 +65,12 @@ void computeTangentFrames(Mesh& mesh) {
   std::vector<glm::vec3> bitangents(count, glm::vec3(0.0f));
 
   for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-    const std::uint32_t i0 = mesh.indices[i], i1 = mesh.indices[i + 1], i2 = mesh.indices[i + 2];
-    const Vertex& u = mesh.vertices[i0];
-    const Vertex& v = mesh.vertices[i1];
-    const Vertex& w = mesh.vertices[i2];
-    // Reference 004: P = V - U, Q = W - U, (s1, t1) and (s2, t2) their UV differences;
-    // [T; B] = 1 / (s1 t2 - s2 t1) * [t2 -t1; -s2 s1] * [P; Q].
-    const glm::vec3 p = v.position - u.position;
-    const glm::vec3 q = w.position - u.position;
-    const float s1 = v.uv.x - u.uv.x, t1 = v.uv.y - u.uv.y;
-    const float s2 = w.uv.x - u.uv.x, t2 = w.uv.y - u.uv.y;
-    const float det = s1 * t2 - s2 * t1;
-    // Degenerate UVs: the system has no solution; skipping keeps NaN and infinities out.
-    // The threshold is relative to the UV extent so tiny but valid triangles still count.
-    const float uvScale = std::max({std::abs(s1), std::abs(t1), std::abs(s2), std::abs(t2)});
-    if (!(std::abs(det) > 1e-12f * uvScale * uvScale) || !std::isfinite(det))
+    glm::vec3 t, b;
+    if (!triangleDerivatives(mesh, i, t, b))
       continue;
-    const float r = 1.0f / det;
-    const glm::vec3 t = (p * t2 - q * t1) * r;
-    const glm::vec3 b = (q * s1 - p * s2) * r;
-    if (!std::isfinite(glm::dot(t, t)) || !std::isfinite(glm::dot(b, b)))
-      continue;
-    for (std::uint32_t index : {i0, i1, i2}) {
-      tangents[index] += t;
-      bitangents[index] += b;
+    for (std::size_t corner = i; corner < i + 3; ++corner) {
+      tangents[mesh.indices[corner]] += t;
+      bitangents[mesh.indices[corner]] += b;
     }
   }
 
@@ -74,6 +96,7 @@ void computeTangentFrames(Mesh& mesh) {
     const float w = glm::dot(glm::cross(n, t), bitangents[i]) < 0.0f ? -1.0f : 1.0f;
     vertex.tangent = glm::vec4(t, w);
   }
+  computeUvScales(mesh);
 }
 
 }  // namespace relief::core::inline mesh

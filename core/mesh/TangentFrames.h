@@ -10,6 +10,12 @@ namespace relief::core::inline mesh {
 // Recomputes every vertex's tangent from positions, normals and UVs. Triangles whose UVs are
 // degenerate (zero area in UV space) contribute nothing; a vertex left without a usable
 // tangent gets one perpendicular to its normal, so no NaN ever reaches the shader.
+// Computes the UV scales too (computeUvScales).
 void computeTangentFrames(Mesh& mesh);
+
+// Sets every vertex's uvScale: the lengths of dP/du and dP/dv of the triangles around it
+// (reference 004's per-triangle T and B before normalisation), averaged. Vertices of degenerate
+// triangles only keep 0.
+void computeUvScales(Mesh& mesh);
 
 }  // namespace relief::core::inline mesh

@@ -29,6 +29,7 @@ uniform float uShadowSoftness;  // angular diameter of the light, radians
 uniform bool uShadowLimit;      // Welsh's limit on the light ray (reference 003, 1.3)
 
 uniform float uTiling;          // repeats across the mesh UV range (times the view's preview's)
+uniform float uWorldPerUv;      // world units per unit of mesh UV (core::worldUnitsPerUv)
 uniform bool uTileSeams;        // the view's tile preview: lines where the map's edges meet
 uniform float uNormalStrength;  // factor on the normal's tangent-plane tilt
 uniform bool uNormalYDown;      // DirectX normal maps store +Y pointing down

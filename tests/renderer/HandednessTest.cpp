@@ -1,6 +1,7 @@
 // Mirrored UVs (reference 004's tangent.w): on a plane whose right half has u mirrored, the
 // parallax offset must point away from the viewer in world space on both halves, so it has
 // opposite signs in u and the same sign in v.
+#include "core/mesh/Mesh.h"
 #include "core/mesh/TangentFrames.h"
 #include "support/OffscreenFixture.h"
 #include "support/TestMeshes.h"
@@ -39,10 +40,17 @@ TEST_F(Handedness, ParallaxShiftsAwayFromTheViewerOnBothHalves) {
   const float* right = offsets->pixel(140, y);  // right half: u shrinks with world X
   ASSERT_GT(left[3], 0.0f);
   ASSERT_GT(right[3], 0.0f);
-  // Away from the viewer is world -Z everywhere, which is +v on both halves. Kaneko's offset
-  // there is |s| tan(45 degrees) = 0.05 UV = 0.4 texels of the 8-texel map.
-  EXPECT_NEAR(left[1], 0.4f, 0.1f);
-  EXPECT_NEAR(right[1], 0.4f, 0.1f);
+  // Away from the viewer is world -Z everywhere, which is +v on both halves. The relief is
+  // 0.05 of the mesh's world units per UV deep (core::worldUnitsPerUv: sqrt(4 / 2), each half
+  // mapping UV 0..1 over 1 x 2 units), and Kaneko's offset at 45 degrees moves the point seen
+  // as far along the surface: 0.0707 units, which v (2 units long) covers in 0.0354, 0.28
+  // texels of the 8-texel map. (With the tangent frame's unit axes the depth followed v's
+  // length instead, 0.4 texels.)
+  const float expectedTexels =
+      0.05f * float(core::worldUnitsPerUv(test::mirroredQuads())) / 2.0f * 8.0f;
+  EXPECT_NEAR(expectedTexels, 0.283f, 0.001f);
+  EXPECT_NEAR(left[1], expectedTexels, 0.03f);
+  EXPECT_NEAR(right[1], expectedTexels, 0.03f);
   // Left of centre the eye ray also runs toward -X (world), right of centre toward +X. In
   // texture u that is negative on the left half and, mirrored, negative on the right too.
   EXPECT_LT(left[0], 0.0f);

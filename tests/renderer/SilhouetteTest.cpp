@@ -134,8 +134,14 @@ OutlineIou measureOutline(Silhouettes& test, const core::Mesh& mesh, const char*
   return iou;
 }
 
-// On the cylinder the side's texels are near square (u runs twice around): the marches and the
-// displacement give the relief about the same depth in world units, and the outlines agree.
+// The marches give the relief the displacement's depth in world units (toUvHeightSpace: the
+// mesh's one world-per-UV factor, the surface's own UV axes for the parallax), so the outlines
+// agree on the cylinder, whose texels are near square, and on the sphere, whose texels are twice
+// as wide as tall at the equator and squeezed to nothing at the poles (with the tangent frame's
+// unit axes the marches carved a third deeper at the equator: silhouette POM reached 0.754).
+// Measured on llvmpipe: cylinder POM 0.867, with silhouettes 0.919; sphere POM 0.713, with
+// silhouettes 0.850 (0.842 with Oliveira and Policarpo's quadratic instead of the osculating
+// circle, curved_march.glsl).
 TEST_F(Silhouettes, CylinderOutlineFollowsTheDisplacedMesh) {
   const OutlineIou iou = measureOutline(*this, core::makeCylinder(), "cylinder");
   EXPECT_GE(iou.silhouette, 0.85);
@@ -143,14 +149,11 @@ TEST_F(Silhouettes, CylinderOutlineFollowsTheDisplacedMesh) {
   EXPECT_GT(iou.silhouette, iou.pom + 0.05);
 }
 
-// The sphere's texels are twice as wide as tall at the equator: the marches read heights in
-// the pixel's own world-per-UV (the mean of the two, as every per-pixel technique does), the
-// displacement in the mesh's one factor (crack-free), so the marches carve a third deeper
-// there and the outlines cannot meet as closely. The option still brings the outline closer.
-TEST_F(Silhouettes, SphereOutlineMovesTowardTheDisplacedMesh) {
+TEST_F(Silhouettes, SphereOutlineFollowsTheDisplacedMesh) {
   const OutlineIou iou = measureOutline(*this, core::makeSphere(), "sphere");
-  EXPECT_GT(iou.silhouette, iou.pom + 0.02);
-  EXPECT_GT(iou.relief, iou.pom + 0.02);
+  EXPECT_GE(iou.silhouette, 0.85);
+  EXPECT_GE(iou.relief, 0.85);
+  EXPECT_GT(iou.silhouette, iou.pom + 0.1);
 }
 
 TEST_F(Silhouettes, ThePlaneIsUnchangedAndItsClipKept) {
