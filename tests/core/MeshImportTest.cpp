@@ -37,6 +37,9 @@ TEST(MeshImport, ObjWithUvsGetsComputedTangents) {
     EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);  // u runs along +X
     EXPECT_EQ(v.tangent.w, 1.0f);
     EXPECT_NEAR(v.normal.y, 1.0f, 1e-5f);
+    // UV 0..1 over 2 units each way (core::Vertex::uvScale, for the parallax marches' depth).
+    EXPECT_NEAR(v.uvScale.x, 2.0f, 1e-5f);
+    EXPECT_NEAR(v.uvScale.y, 2.0f, 1e-5f);
   }
 }
 
@@ -116,6 +119,9 @@ TEST(MeshImport, TangentsInTheFileAreKeptWithTheirHandedness) {
   for (const Vertex& v : imported->mesh.vertices) {
     EXPECT_NEAR(v.tangent.x, -1.0f, 1e-5f);
     EXPECT_EQ(v.tangent.w, -1.0f);
+    // The file's tangents are kept, and the texel size is still measured: one unit a UV unit.
+    EXPECT_NEAR(v.uvScale.x, 1.0f, 1e-5f);
+    EXPECT_NEAR(v.uvScale.y, 1.0f, 1e-5f);
   }
 }
 
