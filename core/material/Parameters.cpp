@@ -42,7 +42,9 @@ std::vector<ParameterSpec> reliefParameters() {
         "heightScale", "Height scale", "UV units (fractions of the texture width)",
         0.0, 0.25, 0.04, 3,
         "Depth of the relief: heights 0..1 span this many texture widths. The surface height "
-        "is h * heightScale + heightBias (references 000 and 004).")),
+        "is h * heightScale + heightBias (references 000 and 004). On a mesh whose texels vary "
+        "in size or shape (a sphere), widths at the mesh's mean texel size, as the "
+        "displacement technique measures them: one depth in world units everywhere.")),
     parameter(ParamId::HeightBias, kRelief, {ParamUse::Always, "uHeightBias"}, numberOption(
         "heightBias", "Height bias", "UV units", -0.25, 0.25, -0.04, 3,
         "Moves the relief relative to the mesh surface (the reference plane of the marching "
