@@ -30,6 +30,10 @@ Status failure(const std::string& path, const std::string& what, int error) {
 }  // namespace
 
 Status writeFileAtomically(const std::string& path, std::string_view bytes) {
+  return writeFileAtomically(path, std::span<const std::string_view>(&bytes, 1));
+}
+
+Status writeFileAtomically(const std::string& path, std::span<const std::string_view> pieces) {
   const std::filesystem::path target = std::filesystem::absolute(path);
   const std::string temporary = temporaryPathFor(target);
   const TemporaryFile removedIfInterrupted(temporary);
@@ -39,27 +43,28 @@ Status writeFileAtomically(const std::string& path, std::string_view bytes) {
 
   // A file-size limit would otherwise kill the process with SIGXFSZ instead of failing the write.
   const auto previous = std::signal(SIGXFSZ, SIG_IGN);
-  std::size_t written = 0;
+  std::size_t total = 0;
   int error = 0;
-  while (written < bytes.size()) {
-    const ssize_t result = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (result < 0) {
-      if (errno == EINTR)
+  for (const std::string_view bytes : pieces) {
+    std::size_t written = 0;
+    while (!error && written < bytes.size()) {
+      const ssize_t result = ::write(fd, bytes.data() + written, bytes.size() - written);
+      if (result < 0) {
+        if (errno != EINTR)
+          error = errno;
         continue;
-      error = errno;
-      break;
+      }
+      if (result == 0)
+        error = EIO;
+      written += std::size_t(result);
     }
-    if (result == 0) {
-      error = EIO;
-      break;
-    }
-    written += std::size_t(result);
+    total += written;
   }
   std::signal(SIGXFSZ, previous);
   if (!error && ::fsync(fd) != 0)
     error = errno;
   struct stat status {};
-  if (!error && (::fstat(fd, &status) != 0 || std::size_t(status.st_size) != bytes.size())) {
+  if (!error && (::fstat(fd, &status) != 0 || std::size_t(status.st_size) != total)) {
     error = error ? error : EIO;
   }
   if (::close(fd) != 0 && !error)

@@ -7,6 +7,7 @@
 
 #include "core/base/Result.h"
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -14,5 +15,8 @@ namespace relief::core::inline base {
 
 // Fails with a message naming `path` and the reason; the previous file is then untouched.
 Status writeFileAtomically(const std::string& path, std::string_view bytes);
+// The file made of `pieces` one after another, written without joining them first (a
+// container's header and its payload, which can be large, stay where they are).
+Status writeFileAtomically(const std::string& path, std::span<const std::string_view> pieces);
 
 }  // namespace relief::core::inline base

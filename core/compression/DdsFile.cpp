@@ -70,7 +70,7 @@ std::string fourCCText(std::uint32_t fourCC) {
 
 }  // namespace
 
-Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture) {
+Result<std::vector<std::uint8_t>> encodeDdsHeader(const CompressedTexture& texture) {
   const TextureFormatInfo& info = textureFormatInfo(texture.format);
   if (!containerHolds(TextureContainer::Dds, texture.format)) {
     return makeError(std::string(info.label) +
@@ -107,9 +107,17 @@ Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture) {
     out.u32(1);
     out.u32(0);
   }
-  for (const CompressedLevel& level : texture.levels)
-    out.bytes(level.data.data(), level.data.size());
   return std::move(out.data());
+}
+
+Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture) {
+  Result<std::vector<std::uint8_t>> header = encodeDdsHeader(texture);
+  if (!header)
+    return header;
+  std::vector<std::uint8_t> bytes = std::move(header).value();
+  for (const CompressedLevel& level : texture.levels)
+    bytes.insert(bytes.end(), level.data.begin(), level.data.end());
+  return bytes;
 }
 
 Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,

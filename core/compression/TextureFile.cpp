@@ -69,19 +69,23 @@ Status saveCompressedTexture(const CompressedTexture& texture, const std::string
   const std::optional<TextureContainer> container = containerForPath(path);
   if (!container)
     return makeError(path + ": compressed textures are saved as .dds or .ktx2");
-  std::vector<std::uint8_t> bytes;
+  const auto view = [](const std::vector<std::uint8_t>& bytes) {
+    return std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  };
   if (*container == TextureContainer::Dds) {
     if (zstdLevel > 0)
       return makeError(path + ": Zstandard supercompression is a KTX2 feature; DDS has none");
-    Result<std::vector<std::uint8_t>> dds = encodeDds(texture);
-    if (!dds)
-      return makeError(path + ": " + dds.error());
-    bytes = std::move(dds).value();
-  } else {
-    bytes = encodeKtx2(texture, zstdLevel);
+    // The header, then the levels' blocks where they are: joined, a 4096^2 BC7 map's 16 MB would
+    // be copied once more (and its fresh pages faulted in) only to be written.
+    Result<std::vector<std::uint8_t>> header = encodeDdsHeader(texture);
+    if (!header)
+      return makeError(path + ": " + header.error());
+    std::vector<std::string_view> pieces{view(header.value())};
+    for (const CompressedLevel& level : texture.levels)
+      pieces.push_back(view(level.data));
+    return writeFileAtomically(path, pieces);
   }
-  return writeFileAtomically(
-      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  return writeFileAtomically(path, view(encodeKtx2(texture, zstdLevel)));
 }
 
 Result<CompressedTexture> loadCompressedTexture(const std::string& path) {

@@ -54,6 +54,8 @@ std::string containerExtension(TextureContainer container);  // ".dds", ".ktx2"
 
 // The file's bytes; `name` appears in error messages.
 Result<std::vector<std::uint8_t>> encodeDds(const CompressedTexture& texture);
+// The DDS file's header alone: encodeDds is it followed by every level's blocks.
+Result<std::vector<std::uint8_t>> encodeDdsHeader(const CompressedTexture& texture);
 Result<CompressedTexture> decodeDds(const std::vector<std::uint8_t>& bytes,
                                     const std::string& name);
 // zstdLevel 1..22 supercompresses each level with Zstandard (KTX2 scheme 2); 0 does not.

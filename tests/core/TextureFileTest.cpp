@@ -168,6 +168,10 @@ TEST(DdsFileTest, OpenImageIOReadsOurFilesWithOurPixels) {
     const std::string path =
         folder + "/oiio-" + std::string(textureFormatInfo(format).name) + ".dds";
     ASSERT_TRUE(saveCompressedTexture(texture, path).ok());
+    // Saved as header and levels without joining them: the file is encodeDds's bytes.
+    std::ifstream saved(path, std::ios::binary);
+    const std::vector<std::uint8_t> file{std::istreambuf_iterator<char>(saved), {}};
+    EXPECT_EQ(file, encodeDds(texture).value());
     const Image ours = decodeLevel(texture).value();
 
     auto input = OIIO::ImageInput::open(path);
