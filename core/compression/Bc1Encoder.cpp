@@ -62,34 +62,35 @@ constexpr Bc1Effort kBc1Efforts[3] = {
     {3, 8, 0.0f, 0.0f, 16, true},
 };
 
-int expand5(int v) {
+constexpr int expand5(int v) {
   return (v << 3) | (v >> 2);
 }
-int expand6(int v) {
+constexpr int expand6(int v) {
   return (v << 2) | (v >> 4);
 }
 
-// The nearest 5- and 6-bit values of each 8-bit value, as they decode.
+// The nearest 5- and 6-bit values of each 8-bit value, as they decode. Built at compile time:
+// as a function's static, every quantise paid its guard's check.
 struct NearestTables {
-  std::uint8_t five[256], six[256];
-  NearestTables() {
-    for (int v = 0; v < 256; ++v) {
-      int best5 = 0, best6 = 0;
-      for (int q = 0; q < 64; ++q) {
-        if (q < 32 && std::abs(expand5(q) - v) < std::abs(expand5(best5) - v))
-          best5 = q;
-        if (std::abs(expand6(q) - v) < std::abs(expand6(best6) - v))
-          best6 = q;
-      }
-      five[v] = std::uint8_t(best5);
-      six[v] = std::uint8_t(best6);
-    }
-  }
+  std::uint8_t five[256] = {}, six[256] = {};
 };
-const NearestTables& nearest() {
-  static const NearestTables tables;
+constexpr NearestTables makeNearestTables() {
+  const auto distance = [](int a, int b) { return a < b ? b - a : a - b; };
+  NearestTables tables;
+  for (int v = 0; v < 256; ++v) {
+    int best5 = 0, best6 = 0;
+    for (int q = 0; q < 64; ++q) {
+      if (q < 32 && distance(expand5(q), v) < distance(expand5(best5), v))
+        best5 = q;
+      if (distance(expand6(q), v) < distance(expand6(best6), v))
+        best6 = q;
+    }
+    tables.five[v] = std::uint8_t(best5);
+    tables.six[v] = std::uint8_t(best6);
+  }
   return tables;
 }
+constexpr NearestTables kNearest = makeNearestTables();
 
 // A 5:6:5 endpoint, unpacked.
 struct Endpoint {
@@ -106,7 +107,7 @@ Endpoint quantise(const float colour[3]) {
   Endpoint e;
   for (int c = 0; c < 3; ++c) {
     const int v = std::clamp(int(colour[c] + 0.5f), 0, 255);  // colour is never negative
-    e.q[c] = c == 1 ? nearest().six[v] : nearest().five[v];
+    e.q[c] = c == 1 ? kNearest.six[v] : kNearest.five[v];
   }
   return e;
 }
