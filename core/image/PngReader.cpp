@@ -16,7 +16,6 @@
 #include <fstream>
 #include <memory>
 #include <optional>
-#include <thread>
 #include <vector>
 
 namespace relief::core::inline image {
@@ -112,35 +111,6 @@ Result<std::optional<PngChunks>> walkChunks(const std::string& path, FileBytes& 
   }
   return std::optional<PngChunks>(chunks);
 }
-
-// Makes the pages of a buffer whose values are about to be overwritten resident from another
-// thread, front first, until stopped: it writes a byte into each, so that the kernel maps and
-// zeroes the page now rather than at the first write of the code that fills it. A fresh float
-// image's pages took 90 ms of processor time to zero for a 2048^2 RGB map on this project's
-// (virtual) machines, as long as decoding the PNG, which leaves a second core idle.
-class PageToucher {
- public:
-  PageToucher(std::uint8_t* begin, std::size_t bytes)
-      : m_thread([this, begin, bytes] {
-          constexpr std::size_t kPage = 4096;
-          for (std::size_t at = 0; at < bytes && !m_stop.load(std::memory_order_relaxed);
-               at += kPage)
-            static_cast<volatile std::uint8_t*>(begin)[at] = 0;
-        }) {}
-  ~PageToucher() { stop(); }
-  PageToucher(const PageToucher&) = delete;
-  PageToucher& operator=(const PageToucher&) = delete;
-  // Returns once the thread has stopped writing.
-  void stop() {
-    m_stop = true;
-    if (m_thread.joinable())
-      m_thread.join();
-  }
-
- private:
-  std::atomic<bool> m_stop{false};
-  std::thread m_thread;
-};
 
 // Inflates the zlib stream (the first `compressed` bytes of `bytes`) into exactly
 // `inflatedBytes` at `raw`.
@@ -273,14 +243,6 @@ Status convertRows(const std::string& path, const Header& header, const Palette&
 }  // namespace
 
 Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
-  // The raw rows will take the buffer's tail (below); what lies in front of the most they can
-  // take (16-bit samples, a filter byte a row) is touched while the file is read and inflated.
-  const std::size_t mostRaw =
-      (std::size_t(2) * std::size_t(image.channels()) * std::size_t(image.width()) + 1) *
-      std::size_t(image.height());
-  const std::size_t imageBytes = sizeof(float) * image.valueCount();
-  PageToucher toucher(reinterpret_cast<std::uint8_t*>(image.data()),
-                      imageBytes > mostRaw ? imageBytes - mostRaw : 0);
   std::ifstream file(path, std::ios::binary | std::ios::ate);
   if (!file)
     return makeError(path + ": cannot be opened for reading");
@@ -332,9 +294,7 @@ Result<PngFastDecode> decodePngPixels(const std::string& path, Image& image) {
   auto* const floatBytes = reinterpret_cast<std::uint8_t*>(image.data());
   const std::size_t floatRowBytes = sizeof(float) * std::size_t(channels) * header.width;
   std::uint8_t* const raw = floatBytes + floatRowBytes * header.height - inflatedBytes;
-  Status inflated = inflateStream(path, bytes, compressed, raw, inflatedBytes);
-  toucher.stop();  // before any float is written: its zeros must not land on them
-  if (!inflated)
+  if (Status inflated = inflateStream(path, bytes, compressed, raw, inflatedBytes); !inflated)
     return makeError(inflated.error());
   bytes = {};
   if (Status converted =
