@@ -27,9 +27,10 @@ foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
   endif()
 endforeach()
 
-# Texture codecs. libsquish has no CMake config and an empty pkg-config prefix;
-# android-libetc1 lives in a private folder without any metadata, so it is linked by path with
-# an rpath (CMake adds it for full library paths outside the system folders).
+# Texture codecs. libsquish has no CMake config and an empty pkg-config prefix.
+# android-libetc1 (ETC1), which only the tests link to compare Relief's ETC1 encoder with, lives in
+# a private folder without any metadata, so it is linked by path with an rpath (CMake adds it for
+# full library paths outside the system folders).
 find_path(SQUISH_INCLUDE_DIR squish.h REQUIRED)
 find_library(SQUISH_LIBRARY squish REQUIRED)
 add_library(relief_squish INTERFACE)

@@ -11,12 +11,14 @@ packages=(
   qt6-base-dev libqt6opengl6-dev libqt6openglwidgets6 qt6-qpa-plugins qt6-charts-dev
   # domain libraries
   libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev libassimp-dev
-  libsquish-dev libastcenc-dev android-libetc1-dev libfftw3-dev libxcb1-dev libzstd-dev zlib1g-dev libdeflate-dev
-  # tests: GoogleTest, a headless X server with Mesa's software OpenGL, shader validation
-  libgtest-dev libgmock-dev xvfb xauth mesa-utils libgl1-mesa-dri glslang-tools
+  libsquish-dev libastcenc-dev libfftw3-dev libxcb1-dev libzstd-dev zlib1g-dev libdeflate-dev
+  # tests: GoogleTest, a headless X server with Mesa's software OpenGL, shader validation,
+  # android-libetc1 (the ETC1 encoder Relief's is compared with)
+  libgtest-dev libgmock-dev xvfb xauth mesa-utils libgl1-mesa-dri glslang-tools android-libetc1-dev
   # screenshots and independent image readers used while testing; scikit-image ships the real
-  # photographs the encoder quality tests and benchmarks use
-  imagemagick python3-pil python3-numpy zstd python3-skimage
+  # photographs the encoder quality tests and benchmarks use, Extreme Tux Racer's data its game
+  # colour maps
+  imagemagick python3-pil python3-numpy zstd python3-skimage extremetuxracer-data
   # packaging (make package) and its checks: dpkg-shlibdeps, Debian's package and desktop
   # validators, the MIME database
   dpkg-dev lintian desktop-file-utils appstream shared-mime-info

@@ -45,9 +45,9 @@ void encodeBc6hBlock(bool isSigned, CompressionQuality quality, const BlockTexel
 void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality quality,
                      bool perceptual, bool bc1, std::uint8_t* out);
 
-// ETC1 (android-libetc1; also a valid ETC2 RGB block), ETC2 RGB (ETC1's modes, the planar mode
+// ETC1 (Etc1Encoder.cpp; also a valid ETC2 RGB block), ETC2 RGB (ETC1's modes, the planar mode
 // and, at qualities normal and best, the T and H modes), ETC2 RGBA (that colour with our EAC
-// alpha), EAC R11 and RG11 (our encoder). Decoding covers every ETC2 mode (individual,
+// alpha), EAC R11 and RG11: all our encoders. Decoding covers every ETC2 mode (individual,
 // differential, T, H, planar), so files from other encoders decode too.
 void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const BlockTexels& texels,
                     int validMask, std::uint8_t* out);
@@ -63,6 +63,12 @@ inline constexpr int kEacModifiers[16][8] = {
     {-3, -4, -7, -10, 2, 3, 6, 9},  {-1, -2, -3, -10, 0, 1, 2, 9},   {-4, -6, -8, -9, 3, 5, 7, 8},
     {-3, -5, -7, -9, 2, 4, 6, 8}};
 
+// ETC1/ETC2 intensity modifier tables (OpenGL ES 3.0, table C.3; codeword 0..7); a texel's
+// index (msb, lsb) picks 00 +a, 01 +b, 10 -a, 11 -b.
+inline constexpr int kEtcModifiers[8][4] = {
+    {2, 8, -2, -8},     {5, 17, -5, -17},   {9, 29, -9, -29},     {13, 42, -13, -42},
+    {18, 60, -18, -60}, {24, 80, -24, -80}, {33, 106, -33, -106}, {47, 183, -47, -183}};
+
 // ETC2's T and H mode distances (OpenGL ES 3.0, table C.8), picked by a 3-bit index.
 inline constexpr int kEtc2Distances[8] = {3, 6, 11, 16, 23, 32, 41, 64};
 
@@ -76,8 +82,13 @@ void decodeEtc2Rgb(const std::uint8_t in[8], float rgb[16][3]);
 // channel whose differential sum leaves 0..31).
 enum class Etc2Mode { Individual, Differential, T, H, Planar };
 Etc2Mode etc2Mode(const std::uint8_t in[8]);
+// ETC1's individual and differential modes (Etc1Encoder.cpp) for RGB in 0..255: a search of
+// each half's base colour and table; returns the squared error over the valid texels. The
+// block is valid ETC1 and ETC2 RGB.
+float encodeEtc1(const float rgb[16][3], int validMask, CompressionQuality quality,
+                 std::uint8_t out[8]);
 // ETC2's planar mode (Etc2Planar.cpp) for RGB in 0..255; returns the squared error over the
-// valid texels. ETC2 RGB and RGBA keep it where it beats libetc1's ETC1 block.
+// valid texels. ETC2 RGB and RGBA keep it where it beats the ETC1 block.
 float encodeEtc2Planar(const float rgb[16][3], int validMask, std::uint8_t out[8]);
 // ETC2's T and H modes (Etc2TAndH.cpp) for RGB in 0..255: the better of the two for the block;
 // returns the squared error over the valid texels. Best searches more splits of the texels.

@@ -4,8 +4,6 @@
 // words; texel (x, y) uses index bit x * 4 + y (column-major).
 #include "core/compression/BlockCodecs.h"
 
-#include <android/ETC1/etc1.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -14,12 +12,6 @@
 
 namespace relief::core::inline compression {
 namespace {
-
-// ETC1/ETC2 intensity modifier tables (codeword 0..7); index msb,lsb: 00 +a, 01 +b, 10 -a,
-// 11 -b.
-constexpr int kEtcModifiers[8][4] = {{2, 8, -2, -8},       {5, 17, -5, -17},    {9, 29, -9, -29},
-                                     {13, 42, -13, -42},   {18, 60, -18, -60},  {24, 80, -24, -80},
-                                     {33, 106, -33, -106}, {47, 183, -47, -183}};
 
 std::uint64_t readBigEndian(const std::uint8_t* p) {
   std::uint64_t word = 0;
@@ -380,32 +372,16 @@ void encodeEtcBlock(TextureFormat format, CompressionQuality quality, const Bloc
   } else if (format != TextureFormat::Etc1 && format != TextureFormat::Etc2) {
     throwNotOfFamily("encodeEtcBlock", format);
   }
-  // ETC1 colour (android-libetc1 searches every mode it has; it has one quality).
-  etc1_byte rgb[16 * 3];
+  // ETC1 colour: the individual or differential block (Etc1Encoder.cpp).
+  float colour[16][3];
   for (int t = 0; t < 16; ++t) {
     for (int ch = 0; ch < 3; ++ch)
-      rgb[t * 3 + ch] = etc1_byte(std::lround(std::clamp(texels[t][ch], 0.0f, 1.0f) * 255.0f));
+      colour[t][ch] = std::round(std::clamp(texels[t][ch], 0.0f, 1.0f) * 255.0f);
   }
-  // libetc1 averages each sub-block as a sum over its valid texels divided by 8 whatever the
-  // mask, so a partial mask darkens edge blocks. The padding repeats edge texels, which makes
-  // fitting every texel correct; the mask is not passed on (the planar fit uses it).
-  etc1_encode_block(rgb, 0xFFFF, out);
+  const float etc1Error = encodeEtc1(colour, validMask, quality, out);
   if (format == TextureFormat::Etc1)
     return;
   // ETC2: its planar mode, and at normal and best its T and H modes, where they beat ETC1's.
-  float colour[16][3], decoded[16][3];
-  for (int t = 0; t < 16; ++t) {
-    for (int ch = 0; ch < 3; ++ch)
-      colour[t][ch] = float(rgb[t * 3 + ch]);
-  }
-  decodeEtc2Rgb(out, decoded);
-  float etc1Error = 0.0f;
-  for (int t = 0; t < 16; ++t) {
-    for (int ch = 0; ch < 3; ++ch) {
-      const float e = decoded[t][ch] * 255.0f - colour[t][ch];
-      etc1Error += (validMask >> t) & 1 ? e * e : 0.0f;
-    }
-  }
   std::uint8_t planar[8];
   const float planarError = encodeEtc2Planar(colour, validMask, planar);
   float bestError = std::min(etc1Error, planarError);

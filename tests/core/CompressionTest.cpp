@@ -530,8 +530,9 @@ float worstEtcError(const BlockTexels& texels, TextureFormat format, Compression
 // ETC2's planar mode: a smooth gradient, which ETC1 can only band, comes back within a step or
 // two as a planar block (differential bit set, red and green in range, blue overflowing:
 // OpenGL ES 3.0 C.1.5); and on photographs ETC2 RGB (planar, T and H modes at quality normal)
-// is never worse than ETC1 (each block keeps the better) and better by 1 dB on average
-// (measured on these crops 0.47 to 2.97 dB, mean 1.40; planar alone gave 0.46).
+// is never worse than ETC1 (each block keeps the better) and better by 0.5 dB on average, the
+// bar tools/bench-compress holds it to (measured on these crops 0.19 to 2.05 dB, mean 0.75,
+// against Relief's own ETC1 search; 1.40 against android-libetc1's ETC1, used before).
 TEST(CompressionQualityTest, Etc2PlanarModeTakesGradients) {
   BlockTexels texels;
   for (int t = 0; t < 16; ++t) {
@@ -576,7 +577,7 @@ TEST(CompressionQualityTest, Etc2PlanarModeTakesGradients) {
     EXPECT_GE(etc2Psnr, etc1Psnr);
     gain += (etc2Psnr - etc1Psnr) / double(std::max<std::size_t>(photos.size(), 1));
   }
-  EXPECT_GE(gain, 1.0);
+  EXPECT_GE(gain, 0.5);
 }
 
 // ETC2's T and H modes (OpenGL ES 3.0, C.1.5): blocks built from exactly representable paint

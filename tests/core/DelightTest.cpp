@@ -12,7 +12,7 @@
 namespace relief::core {
 namespace {
 
-constexpr int kSize = 128;
+constexpr int kDelightTestSize = 128;
 
 // Linear albedo: a checker of 4-texel squares (0.25 and 0.6) tinted per channel, fine detail
 // well under the radius, the way a surface's own pattern is.
@@ -23,14 +23,14 @@ float albedo(int x, int y, int c) {
 
 // A tileable light: 1 + 0.4 sin(x) cos(y) over the map, the sun through a window.
 float lightAt(int x, int y) {
-  const double t = 2.0 * std::numbers::pi / kSize;
+  const double t = 2.0 * std::numbers::pi / kDelightTestSize;
   return float(1.0 + 0.4 * std::sin(t * x) * std::cos(t * y));
 }
 
 Image photo(bool lit) {
-  Image image(kSize, kSize, 3, ColorSpace::Srgb);
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
+  Image image(kDelightTestSize, kDelightTestSize, 3, ColorSpace::Srgb);
+  for (int y = 0; y < kDelightTestSize; ++y) {
+    for (int x = 0; x < kDelightTestSize; ++x) {
       for (int c = 0; c < 3; ++c)
         image.at(x, y, c) = linearToSrgb(albedo(x, y, c) * (lit ? lightAt(x, y) : 1.0f));
     }
@@ -42,8 +42,8 @@ Image photo(bool lit) {
 // to the true one's mean (delighting keeps the mean light, not the absolute exposure).
 double relativeError(const Image& recovered) {
   double sumRecovered = 0.0, sumTrue = 0.0;
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kDelightTestSize; ++y) {
+    for (int x = 0; x < kDelightTestSize; ++x) {
       for (int c = 0; c < 3; ++c) {
         sumRecovered += srgbToLinear(recovered.at(x, y, c));
         sumTrue += albedo(x, y, c);
@@ -52,15 +52,15 @@ double relativeError(const Image& recovered) {
   }
   const double scale = sumTrue / sumRecovered;
   double squares = 0.0;
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kDelightTestSize; ++y) {
+    for (int x = 0; x < kDelightTestSize; ++x) {
       for (int c = 0; c < 3; ++c) {
         const double ratio = scale * srgbToLinear(recovered.at(x, y, c)) / albedo(x, y, c);
         squares += (ratio - 1.0) * (ratio - 1.0);
       }
     }
   }
-  return std::sqrt(squares / (3.0 * kSize * kSize));
+  return std::sqrt(squares / (3.0 * kDelightTestSize * kDelightTestSize));
 }
 
 TEST(Delight, RecoversAnAlbedoUnderASmoothLight) {
@@ -76,7 +76,7 @@ TEST(Delight, RecoversAnAlbedoUnderASmoothLight) {
   EXPECT_EQ(result.albedo.colorSpace(), ColorSpace::Srgb);
   // The estimated light swings 0.917 x 0.4 about its mean, with an RMS of half that.
   const double swing =
-      0.4 * std::exp(-36.0 * 2.0 * std::pow(2.0 * std::numbers::pi / kSize, 2) / 2.0);
+      0.4 * std::exp(-36.0 * 2.0 * std::pow(2.0 * std::numbers::pi / kDelightTestSize, 2) / 2.0);
   EXPECT_NEAR(result.lightLow, 1.0 - swing, 0.02);
   EXPECT_NEAR(result.lightHigh, 1.0 + swing, 0.02);
   EXPECT_NEAR(result.lightRms, swing / 2.0, 0.01);

@@ -15,7 +15,7 @@ fail() {
 deb=$(ls "$out"/relief_*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
 # OpenImageIO and Assimp are linked by the modules only: dpkg-shlibdeps must find them there.
-for package in libqt6widgets6 libopenimageio2.4 libassimp5 android-libetc1 qt6-qpa-plugins; do
+for package in libqt6widgets6 libopenimageio2.4 libassimp5 qt6-qpa-plugins; do
   case "$depends" in
     *"$package"*) ;;
     *) fail "Depends lacks $package: $depends" ;;

@@ -12,13 +12,13 @@ namespace relief::test {
 
 namespace {
 
-std::vector<core::Image> scikitPhotographs(std::initializer_list<const char*> names) {
+std::vector<core::Image> loadAll(const char* folder, std::initializer_list<const char*> names,
+                                 const char* package) {
   std::vector<core::Image> photos;
   for (const char* name : names) {
-    const std::string path = std::string("/usr/lib/python3/dist-packages/skimage/data/") + name;
-    core::Result<core::Image> image = core::loadImage(path);
+    core::Result<core::Image> image = core::loadImage(std::string(folder) + name);
     if (!image) {
-      ADD_FAILURE() << image.error() << " (install python3-skimage: tools/install-deps.sh)";
+      ADD_FAILURE() << image.error() << " (install " << package << ": tools/install-deps.sh)";
       continue;
     }
     photos.push_back(std::move(image).value());
@@ -26,7 +26,18 @@ std::vector<core::Image> scikitPhotographs(std::initializer_list<const char*> na
   return photos;
 }
 
+std::vector<core::Image> scikitPhotographs(std::initializer_list<const char*> names) {
+  return loadAll("/usr/lib/python3/dist-packages/skimage/data/", names, "python3-skimage");
+}
+
 }  // namespace
+
+std::vector<core::Image> gameColourMaps() {
+  return loadAll(
+      "/usr/share/games/etr/terrains/",
+      {"rock01.png", "grass01.png", "mud01.png", "pave01.png", "pebbles04.png", "snowy_rock02.png"},
+      "extremetuxracer-data");
+}
 
 std::vector<core::Image> surfacePhotographs() {
   return scikitPhotographs({"brick.png", "grass.png", "gravel.png"});

@@ -18,4 +18,9 @@ std::vector<core::Image> photographCrops(int size = 256);
 // tileable material starts from. Failing to load one fails the calling test, as above.
 std::vector<core::Image> surfacePhotographs();
 
+// Six colour maps of a real game, whole (256x256): Extreme Tux Racer's terrain textures (rock,
+// grass, mud, paving, pebbles, snowy rock; Debian's extremetuxracer-data, which
+// tools/install-deps.sh installs), 8-bit RGB. Failing to load one fails the calling test, as above.
+std::vector<core::Image> gameColourMaps();
+
 }  // namespace relief::test
