@@ -411,14 +411,18 @@ void consider(Etc1Choice& best, bool flip, bool differential, const Etc1HalfChoi
   }
 }
 
-// The best block for one flip, as searched.
-Etc1Choice searchFlip(const float rgb[16][3], int validMask, bool flip, const Etc1Effort& effort) {
+// The best blocks for one flip, as searched: [0] in the individual mode (when searched), [1] in
+// the differential mode.
+using Etc1FlipChoices = std::array<Etc1Choice, 2>;
+Etc1FlipChoices searchFlip(const float rgb[16][3], int validMask, bool flip,
+                           const Etc1Effort& effort) {
   const Etc1Half halves[2] = {halfOf(rgb, validMask, flip, 0), halfOf(rgb, validMask, flip, 1)};
   const Etc1Precision five{5}, four{4};
   Etc1HalfCandidates found[2];
   for (int half = 0; half < 2; ++half)
     searchHalf(halves[half], five, Etc1LevelBox{}, effort, found[half]);
-  Etc1Choice best;
+  Etc1FlipChoices choices;
+  Etc1Choice& best = choices[1];
   for (int i = 0; i < found[0].size; ++i) {
     for (int j = 0; j < found[1].size; ++j) {
       if (withinStep(found[0].choice[i].level, found[1].choice[j].level))
@@ -449,15 +453,45 @@ Etc1Choice searchFlip(const float rgb[16][3], int validMask, bool flip, const Et
         }
       }
     }
+    // And in between: the first half's levels moved part of the way towards the second's in the
+    // channels the step cannot span (the other channels free), then the second half searched
+    // within the step's reach of where the first landed. A half with a bright texel and one
+    // with a dark one often meet best with both bases off their own best.
+    const std::array<int, 3>&from = found[0].choice[0].level, &to = found[1].choice[0].level;
+    std::array<int, 3> excess;
+    int most = 0;
+    for (int c = 0; c < 3; ++c) {
+      excess[c] = to[c] - from[c] - std::clamp(to[c] - from[c], -4, 3);
+      most = std::max(most, std::abs(excess[c]));
+    }
+    for (int moved = 1; moved < most; ++moved) {
+      Etc1LevelBox firstBox;
+      for (int c = 0; c < 3; ++c) {
+        if (excess[c] != 0) {
+          firstBox.low[c] = firstBox.high[c] =
+              from[c] + int(std::lround(float(excess[c] * moved) / float(most)));
+        }
+      }
+      Etc1HalfCandidates first;
+      searchHalf(halves[0], five, firstBox, effort, first);
+      Etc1LevelBox secondBox;
+      for (int c = 0; c < 3; ++c) {
+        secondBox.low[c] = std::max(0, first.choice[0].level[c] - 4);
+        secondBox.high[c] = std::min(31, first.choice[0].level[c] + 3);
+      }
+      Etc1HalfCandidates second;
+      searchHalf(halves[1], five, secondBox, effort, second);
+      consider(best, flip, true, first.choice[0], second.choice[0]);
+    }
   }
   if (!unconstrained || effort.alwaysIndividual) {
     const Etc1LevelBox box4{{0, 0, 0}, {15, 15, 15}};
     Etc1HalfCandidates individual[2];
     for (int half = 0; half < 2; ++half)
       searchHalf(halves[half], four, box4, effort, individual[half]);
-    consider(best, flip, false, individual[0].choice[0], individual[1].choice[0]);
+    consider(choices[0], flip, false, individual[0].choice[0], individual[1].choice[0]);
   }
-  return best;
+  return choices;
 }
 
 // Packs a choice, each texel taking the modifier that decodes (with the decoder's clamp)
@@ -562,18 +596,28 @@ float encodeEtc1(const float rgb[16][3], int validMask, CompressionQuality quali
                             : quality == CompressionQuality::Normal
                                 ? Etc1Effort{3, 1, 3, false, false}
                                 : Etc1Effort{4, 2, 8, true, true};
-  Etc1Choice choices[2] = {searchFlip(rgb, validMask, false, effort),
-                           searchFlip(rgb, validMask, true, effort)};
-  // The model ignores the clamp, so both flips' winners are packed and judged exactly.
-  float errors[2];
-  for (int flip = 0; flip < 2; ++flip) {
-    std::uint8_t scratch[8];
-    errors[flip] = pack(choices[flip], rgb, validMask, scratch);
-    if (quality == CompressionQuality::Best)
-      errors[flip] = polish(choices[flip], rgb, validMask, errors[flip]);
+  // The search's errors are partly the model's, so each flip's winner is packed and judged
+  // exactly; best polishes each flip's winner in each mode.
+  Etc1Choice winner;
+  float winnerError = std::numeric_limits<float>::max();
+  for (const bool flip : {false, true}) {
+    Etc1FlipChoices choices = searchFlip(rgb, validMask, flip, effort);
+    if (quality != CompressionQuality::Best && choices[0].error < choices[1].error)
+      choices[1] = choices[0];
+    for (int mode = quality == CompressionQuality::Best ? 0 : 1; mode < 2; ++mode) {
+      if (choices[mode].error == std::numeric_limits<float>::max())
+        continue;  // not searched, or no pair within the step's reach
+      std::uint8_t scratch[8];
+      float error = pack(choices[mode], rgb, validMask, scratch);
+      if (quality == CompressionQuality::Best)
+        error = polish(choices[mode], rgb, validMask, error);
+      if (error < winnerError) {
+        winnerError = error;
+        winner = choices[mode];
+      }
+    }
   }
-  const int winner = errors[1] < errors[0] ? 1 : 0;
-  return pack(choices[winner], rgb, validMask, out);
+  return pack(winner, rgb, validMask, out);
 }
 
 }  // namespace relief::core::inline compression
