@@ -32,6 +32,11 @@ struct Bc1Effort {
   // and channel (in 8-bit levels, at unit weight) exceeds this; never when negative.
   float threeColourAbove;
   int perturbSweeps;  // sweeps nudging the quantised endpoints a step at a time (0: none)
+  // The cluster search's splits quantised and evaluated, best (unquantised) first. Splits that
+  // put the same two groups of texels on different levels tie unquantised (both reproduce the
+  // groups' means) but not once quantised: a group on a third-way level lets the endpoints
+  // land further out, where 5:6:5 steps cost less.
+  int splitsEvaluated;
   // Best: the nudges also move a channel's two endpoints together (a step each, either way),
   // and both the four- and the three-colour fit are nudged before they are compared.
   bool thorough;
@@ -49,17 +54,20 @@ struct Bc1Effort {
 // levels) saved 10% of normal's time at the same 36.366 dB; below 20/3, 16% for 36.364 dB;
 // skipping perturbation the same way cost 0.04 dB for 14%, so it stays.
 // Best searches further to meet crunch 1.04's (-dxtQuality uber, uniform metrics) quality:
-// cluster boundaries up to 8 texels from the refined ones (near exhaustive), joint nudges of a
-// channel's two endpoints, up to 16 sweeps, and the four- and three-colour fits each nudged
-// before they are compared. On five scikit-image photographs that took best from 36.05 to
-// 36.11 dB (crunch 36.14 dB) and on the mosaic from 36.42 to 36.49 dB (crunch 36.53 dB in
-// 14.8 s; best 2.7 s as a whole process, libsquish 3.6 s). Steps of two, and a second cluster
-// search with the texels sorted along the best fit's direction (squish's iteration), gained
-// nothing more.
+// every split of the texels along the axis (the cluster boundaries anywhere), the 48 best splits
+// quantised and evaluated (splits that put the same groups on different levels tie before
+// quantisation, and the winner is often the one whose endpoints land outside the groups), joint
+// nudges of a channel's two endpoints, up to 16 sweeps, and the four- and three-colour fits
+// each nudged before they are compared. On five scikit-image photographs best went from 36.05
+// to 36.11 dB with boundaries 8 texels from the refined ones and two splits evaluated, and to
+// 36.13 dB with this (crunch 36.14 dB); on the mosaic 36.42 -> 36.49 -> 36.51 dB in 4.9 s
+// (crunch 36.53 dB in 14.6 s). Steps of two, and a second cluster search with the texels sorted
+// along the best fit's direction (squish's iteration), gained nothing more; 160 splits gained
+// 0.003 dB more for twice the time.
 constexpr Bc1Effort kBc1Efforts[3] = {
-    {1, 0, 0.0f, -1.0f, 0, false},
-    {1, 1, 10.0f / 3.0f, 64.0f / 3.0f, 1, false},
-    {3, 8, 0.0f, 0.0f, 16, true},
+    {1, 0, 0.0f, -1.0f, 0, 2, false},
+    {1, 1, 10.0f / 3.0f, 64.0f / 3.0f, 1, 2, false},
+    {3, 16, 0.0f, 0.0f, 16, 48, true},
 };
 
 constexpr int expand5(int v) {
@@ -310,10 +318,10 @@ void principalAxis(const Source& source, int sorted[16], float e0[3], float e1[3
 
 // Cluster search around a fit: the texels in axis order are split into `levels` runs (run k
 // takes level k); runs whose boundaries lie within `radius` of the fit's level counts are
-// solved by least squares from prefix sums, and the best two by that (unquantised) error are
-// quantised and evaluated.
+// solved by least squares from prefix sums, and the best `splitsEvaluated` by that (unquantised)
+// error are quantised and evaluated.
 void clusterSearch(const Source& source, const int sorted[16], int levels, int radius,
-                   Candidate& best) {
+                   int splitsEvaluated, Candidate& best) {
   const int n = source.count;
   float prefix[17][3] = {}, squares = 0.0f;
   for (int k = 0; k < n; ++k) {
@@ -368,7 +376,11 @@ void clusterSearch(const Source& source, const int sorted[16], int levels, int r
     float error;
     int ends[4];
   };
-  Split top[2] = {{std::numeric_limits<float>::max(), {}}, {std::numeric_limits<float>::max(), {}}};
+  constexpr int kMaxSplits = 48;
+  Split top[kMaxSplits];
+  const int kept = std::min(splitsEvaluated, kMaxSplits);
+  for (int i = 0; i < kept; ++i)
+    top[i].error = std::numeric_limits<float>::max();
   const int splits = levels - 1;
   int lo[3], hi[3];
   for (int s = 0; s < 3; ++s) {
@@ -392,16 +404,18 @@ void clusterSearch(const Source& source, const int sorted[16], int levels, int r
                    (m.bb * m.ax[c] * m.ax[c] - 2.0f * m.ab * m.ax[c] * m.bx[c] +
                     m.aa * m.bx[c] * m.bx[c]);
         }
-        if (error < top[1].error) {
-          top[1] = candidate;
-          top[1].error = error;
-          if (top[1].error < top[0].error)
-            std::swap(top[0], top[1]);
+        if (error < top[kept - 1].error) {
+          int at = kept - 1;
+          for (; at > 0 && top[at - 1].error > error; --at)
+            top[at] = top[at - 1];
+          top[at] = candidate;
+          top[at].error = error;
         }
       }
     }
   }
-  for (const Split& split : top) {
+  for (int i = 0; i < kept; ++i) {
+    const Split& split = top[i];
     if (split.error == std::numeric_limits<float>::max())
       continue;
     const Moments m = momentsOf(split.ends);
@@ -605,7 +619,7 @@ void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality q
   const float weightSum = source.weight[0] + source.weight[1] + source.weight[2];
   if (effort.clusterRadius > 0 && best.error > 0.0f &&
       best.error > effort.clusterAbove * weightSum * float(source.count)) {
-    clusterSearch(source, sorted, 4, effort.clusterRadius, best);
+    clusterSearch(source, sorted, 4, effort.clusterRadius, effort.splitsEvaluated, best);
     refine(source, 1, best);
   }
   if (effort.thorough && best.error > 0.0f)
@@ -616,7 +630,8 @@ void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality q
     Candidate three;
     evaluate(source, quantise(e0), quantise(e1), false, three);
     refine(source, effort.refinePasses, three);
-    clusterSearch(source, sorted, 3, std::max(effort.clusterRadius, 1), three);
+    clusterSearch(source, sorted, 3, std::max(effort.clusterRadius, 1), effort.splitsEvaluated,
+                  three);
     if (effort.thorough && three.error > 0.0f)
       perturb(source, effort.perturbSweeps, true, three);
     if (three.error < best.error)
