@@ -18,6 +18,13 @@
 #include <cmath>
 #include <limits>
 
+// Floating-point contraction off: the AVX-512 copy of the encoder below must round as the
+// default one does (FMA instructions would fuse its multiply-adds), so a map compresses to the
+// same bytes on every x86-64 machine. Pushed and popped: a unity build compiles other files after
+// this one.
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+
 namespace relief::core::inline compression {
 namespace {
 
@@ -571,8 +578,14 @@ void writeBlock(const Candidate& fit, bool bc1, std::uint8_t* out) {
 
 }  // namespace
 
-void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality quality,
-                     bool perceptual, bool bc1, std::uint8_t* out) {
+// Compiled twice, for x86-64-v4 (AVX-512) and for any x86-64, the copy picked when the program
+// loads; `flatten` inlines every helper into each copy so each is vectorised for its own
+// instructions (a block's 16 texels fill one 512-bit register where SSE2 needs four). Measured
+// on the 2048^2 mosaic, one core, fastest of six alternating runs on the shared machine: 1.64 us
+// a block as plain x86-64, 1.55 us with the AVX-512 copy, the same bytes.
+__attribute__((flatten, target_clones("arch=x86-64-v4", "default"))) void encodeBc1Colour(
+    const float rgb[16][3], int validMask, CompressionQuality quality, bool perceptual, bool bc1,
+    std::uint8_t* out) {
   const Bc1Effort& effort = kBc1Efforts[int(quality)];
   Source source;
   source.validMask = std::uint16_t(validMask == 0 ? 0xFFFF : validMask);
@@ -643,3 +656,5 @@ void encodeBc1Colour(const float rgb[16][3], int validMask, CompressionQuality q
 }
 
 }  // namespace relief::core::inline compression
+
+#pragma GCC pop_options
