@@ -411,18 +411,14 @@ void consider(Etc1Choice& best, bool flip, bool differential, const Etc1HalfChoi
   }
 }
 
-// The best blocks for one flip, as searched: [0] in the individual mode (when searched), [1] in
-// the differential mode.
-using Etc1FlipChoices = std::array<Etc1Choice, 2>;
-Etc1FlipChoices searchFlip(const float rgb[16][3], int validMask, bool flip,
-                           const Etc1Effort& effort) {
+// The best block for one flip, as searched.
+Etc1Choice searchFlip(const float rgb[16][3], int validMask, bool flip, const Etc1Effort& effort) {
   const Etc1Half halves[2] = {halfOf(rgb, validMask, flip, 0), halfOf(rgb, validMask, flip, 1)};
   const Etc1Precision five{5}, four{4};
   Etc1HalfCandidates found[2];
   for (int half = 0; half < 2; ++half)
     searchHalf(halves[half], five, Etc1LevelBox{}, effort, found[half]);
-  Etc1FlipChoices choices;
-  Etc1Choice& best = choices[1];
+  Etc1Choice best;
   for (int i = 0; i < found[0].size; ++i) {
     for (int j = 0; j < found[1].size; ++j) {
       if (withinStep(found[0].choice[i].level, found[1].choice[j].level))
@@ -489,9 +485,9 @@ Etc1FlipChoices searchFlip(const float rgb[16][3], int validMask, bool flip,
     Etc1HalfCandidates individual[2];
     for (int half = 0; half < 2; ++half)
       searchHalf(halves[half], four, box4, effort, individual[half]);
-    consider(choices[0], flip, false, individual[0].choice[0], individual[1].choice[0]);
+    consider(best, flip, false, individual[0].choice[0], individual[1].choice[0]);
   }
-  return choices;
+  return best;
 }
 
 // Packs a choice, each texel taking the modifier that decodes (with the decoder's clamp)
@@ -597,27 +593,22 @@ float encodeEtc1(const float rgb[16][3], int validMask, CompressionQuality quali
                                 ? Etc1Effort{3, 1, 3, false, false}
                                 : Etc1Effort{4, 2, 8, true, true};
   // The search's errors are partly the model's, so each flip's winner is packed and judged
-  // exactly; best polishes each flip's winner in each mode.
-  Etc1Choice winner;
+  // exactly (best polishes it first).
   float winnerError = std::numeric_limits<float>::max();
   for (const bool flip : {false, true}) {
-    Etc1FlipChoices choices = searchFlip(rgb, validMask, flip, effort);
-    if (quality != CompressionQuality::Best && choices[0].error < choices[1].error)
-      choices[1] = choices[0];
-    for (int mode = quality == CompressionQuality::Best ? 0 : 1; mode < 2; ++mode) {
-      if (choices[mode].error == std::numeric_limits<float>::max())
-        continue;  // not searched, or no pair within the step's reach
-      std::uint8_t scratch[8];
-      float error = pack(choices[mode], rgb, validMask, scratch);
-      if (quality == CompressionQuality::Best)
-        error = polish(choices[mode], rgb, validMask, error);
-      if (error < winnerError) {
-        winnerError = error;
-        winner = choices[mode];
-      }
+    Etc1Choice choice = searchFlip(rgb, validMask, flip, effort);
+    std::uint8_t block[8];
+    float error = pack(choice, rgb, validMask, block);
+    if (quality == CompressionQuality::Best) {
+      error = polish(choice, rgb, validMask, error);
+      pack(choice, rgb, validMask, block);
+    }
+    if (error < winnerError) {
+      winnerError = error;
+      std::copy(block, block + 8, out);
     }
   }
-  return pack(winner, rgb, validMask, out);
+  return winnerError;
 }
 
 }  // namespace relief::core::inline compression
