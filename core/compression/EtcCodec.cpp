@@ -10,6 +10,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace relief::core::inline compression {
 namespace {
 
@@ -186,100 +190,164 @@ void decodeEacChannel(const std::uint8_t in[8], bool elevenBit, float values[16]
 
 // Each (table, multiplier, base) candidate's eight values come out sorted in this index order:
 // the table's modifiers ascend as 3, 2, 1, 0, 4, 5, 6, 7, and neither a non-negative multiplier
-// nor the clamp changes an order. So a texel's nearest value is found by counting the
-// midpoints below it (no search, no branch), which the compiler vectorises over the texels.
-// Measured on a 2048^2 normal map, one thread: 1.52 s as written; compiled for AVX2 as well
-// (target_clones) 1.66 s, and with explicit eight-texel vector lanes 2.5 s, so neither is kept.
+// nor the clamp changes an order. So a texel's nearest value is the lowest value plus every step
+// whose midpoint lies below the texel (no search, no table look-up, no branch).
 constexpr int kEacAscending[8] = {3, 2, 1, 0, 4, 5, 6, 7};
-constexpr float kPruneMargin = 1.5f;
 
-// The search for one EAC block's base, multiplier and table: the block's targets in the code's
-// units, and the best candidate so far.
+// The search runs in fixed point on eight texels a vector (GCC's and Clang's vector extension;
+// SSE2's pcmpgtw and pmaddwd on the x86-64 baseline). Targets and values are eighths of an R11
+// step (0..16376) or 64ths of an alpha step (0..16320): 16-bit lanes, and sixteen squared
+// differences sum within 32 unsigned bits (16 x 16376^2 < 2^32). A base moves every value of a
+// (table, multiplier) by one amount, so the targets move instead and the midpoints and steps,
+// set up once per (table, multiplier), serve every base the clamp leaves whole. Measured on
+// 2048^2 normal maps to RG11 `normal` (with the multipliers below no longer tried), one thread:
+// float texels summed in order (the compiler kept them scalar) 1.44 s on the bricks' and 1.73 s
+// on a rough one, now 0.80 and 1.06 s; PSNR 63.32 -> 63.31 and 52.734 -> 52.734 dB (targets
+// rounded to an eighth of a step); whole process, two threads, 1.15 -> 0.68 s.
+typedef std::int16_t EacLanes __attribute__((vector_size(16)));
+typedef std::int32_t EacSums __attribute__((vector_size(16)));
+constexpr int kEacFixedR11 = 8, kEacFixedAlpha = 64;
+
+// Per pair of lanes a[2i] b[2i] + a[2i+1] b[2i+1] in 32 bits (pmaddwd where there is SSE2).
+EacSums pairProducts(EacLanes a, EacLanes b) {
+#if defined(__SSE2__)
+  return EacSums(_mm_madd_epi16(__m128i(a), __m128i(b)));
+#else
+  EacSums sums;
+  for (int i = 0; i < 4; ++i)
+    sums[i] = std::int32_t(a[2 * i]) * b[2 * i] + std::int32_t(a[2 * i + 1]) * b[2 * i + 1];
+  return sums;
+#endif
+}
+
+std::uint32_t laneTotal(EacSums sums) {
+  return std::uint32_t(sums[0]) + std::uint32_t(sums[1]) + std::uint32_t(sums[2]) +
+         std::uint32_t(sums[3]);
+}
+
+// A candidate whose first eight texels already reach 3/2 of the best error so far stops there:
+// it cannot win, and a least-squares step from it rarely would. Measured on the 2048^2 bricks
+// maps (tools/bench-compress): R11 15.6% above the exhaustive search against 15.5% without; a
+// margin of 1 (prune whatever cannot win by itself) skipped refinements that would have: 17.7%.
+constexpr std::int64_t kPruneNumerator = 3, kPruneDenominator = 2;
+// Above any real error (those stay under 2^32) and safe to multiply by the margin.
+constexpr std::int64_t kEacNoCandidate = std::int64_t(1) << 40;
+
+// One (table, multiplier)'s values relative to the base's own term (base * 8 + 4 for R11, the
+// base for alpha), in fixed point: the lowest, and per step k its midpoint and its size, each
+// in all eight lanes. Lane 7 of `values` is the highest.
+struct EacShape {
+  EacLanes values;
+  std::int16_t lowest, highest;
+  EacLanes midpoint[7], step[7];
+};
+
+// The midpoints and steps of eight sorted values, each broadcast to every lane.
+void setSteps(const std::int16_t values[8], EacLanes midpoint[7], EacLanes step[7]) {
+  for (int k = 0; k < 7; ++k) {
+    midpoint[k] = EacLanes{} + std::int16_t((values[k] + values[k + 1]) / 2);  // exact: even
+    step[k] = EacLanes{} + std::int16_t(values[k + 1] - values[k]);
+  }
+}
+
+// The search for one EAC block's base, multiplier and table: the block's targets in fixed point,
+// and the best candidate so far.
 class EacSearch {
  public:
   EacSearch(const float values[16], int validMask, bool elevenBit)
-      : m_elevenBit(elevenBit), m_unit(elevenBit ? 8.0f : 1.0f) {
-    // Target values in the code's units: 0..2047 (R11) or 0..255 (alpha). Texels outside the
-    // image (not in validMask) count with weight 0.
-    const float scale = elevenBit ? 2047.0f : 255.0f;
+      : m_elevenBit(elevenBit),
+        m_fixed(elevenBit ? kEacFixedR11 : kEacFixedAlpha),
+        m_maxValue(m_fixed * (elevenBit ? 2047 : 255)) {
+    // Texels outside the image (not in validMask) are masked out of every sum.
+    float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
     for (int t = 0; t < 16; ++t) {
-      m_target[t] = std::clamp(values[t], 0.0f, 1.0f) * scale;
-      m_weight[t] = (validMask & (1 << t)) ? 1.0f : 0.0f;
-      if (m_weight[t] > 0.0f) {
-        m_low = std::min(m_low, m_target[t]);
-        m_high = std::max(m_high, m_target[t]);
+      const float target = std::clamp(values[t], 0.0f, 1.0f) * float(m_maxValue);
+      m_target[t / 8][t % 8] = std::int16_t(target + 0.5f);
+      m_mask[t / 8][t % 8] = (validMask & (1 << t)) ? std::int16_t(-1) : std::int16_t(0);
+      if (validMask & (1 << t)) {
+        low = std::min(low, target);
+        high = std::max(high, target);
       }
     }
     if (validMask == 0)
-      m_low = m_high = 0.0f;
-    m_validCount = float(std::max(1, std::popcount(unsigned(validMask))));
+      low = high = 0.0f;
+    // The range in the code's units, from which each table's multiplier and base start.
+    m_low = low / float(m_fixed);
+    m_high = high / float(m_fixed);
+    m_validCount = std::max(1, std::popcount(unsigned(validMask)));
   }
 
-  bool exact() const { return m_bestError <= 0.0f; }
+  bool exact() const { return m_bestError == 0; }
 
-  // The value a (base, multiplier, modifier) decodes to, in the target's units.
-  float decoded(int base, int multiplier, int modifier) const {
-    if (m_elevenBit) {
-      const int step = multiplier == 0 ? modifier : modifier * multiplier * 8;
-      return float(std::clamp(base * 8 + 4 + step, 0, 2047));
-    }
-    return float(clamp255(base + modifier * multiplier));
-  }
-
-  // One table's search: multipliers within multiplierReach of the one the block's range asks
-  // for, bases within baseReach of the one that centres the table on the range, then the
-  // least-squares base.
-  void searchTable(int table, int multiplierReach, int baseReach) {
+  // One table's search: multipliers from the one the block's range asks for up to
+  // `multipliersAbove` more, bases within baseReach of the one that centres the table on the
+  // range, then least-squares steps from the best of those. Smaller multipliers are not tried:
+  // searched two below and two above (`best` before), smaller ones won 3 blocks in 524,288 on a
+  // rough normal map and none on the bricks' (2048^2, RG11), while one above won more blocks than
+  // the range's own.
+  void searchTable(int table, int multipliersAbove, int baseReach, int refinements) {
     const int* modifiers = kEacModifiers[table];
     const int span = modifiers[7] - modifiers[3];  // largest minus smallest modifier
-    const int ideal = std::clamp(int(std::lround((m_high - m_low) / (float(span) * m_unit))),
-                                 m_elevenBit ? 0 : 1, 15);
-    const int firstMultiplier = std::max(m_elevenBit ? 0 : 1, ideal - multiplierReach);
-    const int lastMultiplier = std::min(15, ideal + multiplierReach);
+    const float unit = m_elevenBit ? 8.0f : 1.0f;  // code units per base step and multiplier
+    const int firstMultiplier =
+        std::clamp(roundToInt((m_high - m_low) / (float(span) * unit)), m_elevenBit ? 0 : 1, 15);
+    const int lastMultiplier = std::min(15, firstMultiplier + multipliersAbove);
+    EacShape shape;
     for (int multiplier = firstMultiplier; multiplier <= lastMultiplier; ++multiplier) {
+      setShape(modifiers, multiplier, shape);
       // Base that puts the table's middle on the range's middle.
       const float middleModifier = 0.5f * float(modifiers[7] + modifiers[3]);
       const float centre = 0.5f * (m_low + m_high) -
-                           middleModifier * (multiplier == 0 ? 1.0f : float(multiplier) * m_unit);
-      const int centreBase = int(std::lround(m_elevenBit ? (centre - 4.0f) / 8.0f : centre));
-      float bestHere = std::numeric_limits<float>::max(), offsetHere = 0.0f;
-      int baseHere = centreBase;
+                           middleModifier * (multiplier == 0 ? 1.0f : float(multiplier) * unit);
+      const int centreBase = roundToInt(m_elevenBit ? (centre - 4.0f) / 8.0f : centre);
+      std::int64_t bestHere = kEacNoCandidate;
+      int baseHere = centreBase, shiftHere = 0;
       for (int base = std::max(0, centreBase - baseReach);
            base <= std::min(255, centreBase + baseReach); ++base) {
-        float offset = 0.0f;
-        const float error = evaluate(modifiers, multiplier, base, offset);
+        int shift = 0;
+        const std::int64_t error = evaluate(shape, base, shift);
         consider(table, multiplier, base, error);
         if (error < bestHere) {
           bestHere = error;
           baseHere = base;
-          offsetHere = offset;
+          shiftHere = shift;
         }
       }
       // Least-squares refinement: move the base by the picks' mean distance (in base steps)
-      // and try there too, unless the window already covered it.
-      const int refined = std::clamp(baseHere - int(std::lround(offsetHere / m_unit)), 0, 255);
-      if (std::abs(refined - centreBase) > baseReach) {
-        float unused = 0.0f;
-        consider(table, multiplier, refined, evaluate(modifiers, multiplier, refined, unused));
+      // and try there too, unless the window already covered it; again from there while that
+      // improves, up to `refinements` steps.
+      for (int step = 0; step < refinements; ++step) {
+        const float stepsOff = float(shiftHere) / float(m_validCount * m_fixed) / unit;
+        const int refined = std::clamp(baseHere - roundToInt(stepsOff), 0, 255);
+        if (std::abs(refined - centreBase) <= baseReach || refined == baseHere)
+          break;
+        int shift = 0;
+        const std::int64_t error = evaluate(shape, refined, shift);
+        consider(table, multiplier, refined, error);
+        if (error >= bestHere)
+          break;
+        bestHere = error;
+        baseHere = refined;
+        shiftHere = shift;
       }
     }
   }
 
-  // The winner as the block's 64 bits. The midpoint count is written out here and in evaluate:
-  // a shared palette type measured 15% slower in the search.
+  // The winner as the block's 64 bits, each texel's index picked as evaluate picks it.
   std::uint64_t word() const {
-    const int* modifiers = kEacModifiers[m_bestTable];
-    float sorted[8];
-    for (int k = 0; k < 8; ++k)
-      sorted[k] = decoded(m_bestBase, m_bestMultiplier, modifiers[kEacAscending[k]]);
+    EacShape shape;
+    setShape(kEacModifiers[m_bestTable], m_bestMultiplier, shape);
+    std::int16_t values[8];
+    clampedValues(shape, m_bestBase, values);
+    const int term = baseTerm(m_bestBase);
     std::uint64_t word = std::uint64_t(m_bestBase) << 56 | std::uint64_t(m_bestMultiplier) << 52 |
                          std::uint64_t(m_bestTable) << 48;
     for (int x = 0; x < 4; ++x) {
       for (int y = 0; y < 4; ++y) {
-        const float value = m_target[y * 4 + x];
+        const int target = m_target[y / 2][(y % 2) * 4 + x] - term;
         int rank = 0;
         for (int k = 0; k < 7; ++k)
-          rank += value > 0.5f * (sorted[k] + sorted[k + 1]) ? 1 : 0;
+          rank += target > (values[k] + values[k + 1]) / 2 ? 1 : 0;
         word |= std::uint64_t(kEacAscending[rank]) << (45 - 3 * (x * 4 + y));
       }
     }
@@ -287,38 +355,69 @@ class EacSearch {
   }
 
  private:
-  // The error of one base, and (in `offset`) the mean distance from each texel to the value it
-  // picked, which says where the least-squares base for those picks lies. A candidate whose
-  // first eight texels already reach kPruneMargin times the best error so far stops there
-  // (infinity; the eight-texel halves still vectorise): it cannot win, and a least-squares
-  // step from it rarely would. Measured on the 2048^2 bricks maps (tools/bench-compress): RG11
-  // normal 1.12 s before, 0.86 s after, the same 0.454 degrees; R11 15.6% above the exhaustive
-  // search against 15.5%. A margin of 1 (prune whatever cannot win by itself) skipped
-  // refinements that would have: 17.7%.
-  float evaluate(const int* modifiers, int multiplier, int base, float& offset) const {
-    float sorted[8], midpoint[7];
-    for (int k = 0; k < 8; ++k)
-      sorted[k] = decoded(base, multiplier, modifiers[kEacAscending[k]]);
-    for (int k = 0; k < 7; ++k)
-      midpoint[k] = 0.5f * (sorted[k] + sorted[k + 1]);
-    float error = 0.0f, shift = 0.0f;
-    for (int half = 0; half < 2; ++half) {
-      for (int t = 8 * half; t < 8 * half + 8; ++t) {
-        int rank = 0;
-        for (int k = 0; k < 7; ++k)
-          rank += m_target[t] > midpoint[k] ? 1 : 0;
-        const float difference = sorted[rank] - m_target[t];
-        error += m_weight[t] * difference * difference;
-        shift += m_weight[t] * difference;
-      }
-      if (half == 0 && error >= kPruneMargin * m_bestError)
-        return std::numeric_limits<float>::infinity();
+  // Round half up; std::lround is a libm call in the hot path (3% of the search, measured).
+  static int roundToInt(float value) { return int(std::floor(value + 0.5f)); }
+
+  // The base's own term in fixed point.
+  int baseTerm(int base) const { return m_fixed * (m_elevenBit ? base * 8 + 4 : base); }
+
+  void setShape(const int* modifiers, int multiplier, EacShape& shape) const {
+    std::int16_t values[8];
+    for (int k = 0; k < 8; ++k) {
+      const int modifier = modifiers[kEacAscending[k]];
+      const int step = !m_elevenBit      ? modifier * multiplier
+                       : multiplier == 0 ? modifier
+                                         : modifier * multiplier * 8;
+      values[k] = std::int16_t(m_fixed * step);
+      shape.values[k] = values[k];
     }
-    offset = shift / m_validCount;
-    return error;
+    shape.lowest = values[0];
+    shape.highest = values[7];
+    setSteps(values, shape.midpoint, shape.step);
   }
 
-  void consider(int table, int multiplier, int base, float error) {
+  // A base's eight values relative to its term, clamped as the decoder clamps.
+  void clampedValues(const EacShape& shape, int base, std::int16_t values[8]) const {
+    const int term = baseTerm(base);
+    for (int k = 0; k < 8; ++k)
+      values[k] = std::int16_t(std::clamp(shape.values[k] + term, 0, m_maxValue) - term);
+  }
+
+  // The squared error of one base in fixed point, and (in `shift`) the summed distance from each
+  // texel to the value it picked, which says where the least-squares base for those picks lies.
+  // A candidate pruned after its first eight texels returns kEacNoCandidate.
+  std::int64_t evaluate(const EacShape& shape, int base, int& shift) const {
+    const int term = baseTerm(base);
+    if (shape.lowest + term >= 0 && shape.highest + term <= m_maxValue)
+      return evaluate(shape.lowest, shape.midpoint, shape.step, term, shift);
+    // The clamp flattens some values: this base's own midpoints and steps.
+    std::int16_t values[8];
+    clampedValues(shape, base, values);
+    EacLanes midpoint[7], step[7];
+    setSteps(values, midpoint, step);
+    return evaluate(values[0], midpoint, step, term, shift);
+  }
+
+  std::int64_t evaluate(std::int16_t lowest, const EacLanes midpoint[7], const EacLanes step[7],
+                        int term, int& shift) const {
+    EacSums squares = {}, sums = {};
+    for (int half = 0; half < 2; ++half) {
+      const EacLanes target = m_target[half] - std::int16_t(term);
+      EacLanes value = EacLanes{} + lowest;
+      for (int k = 0; k < 7; ++k)
+        value += (target > midpoint[k]) & step[k];
+      const EacLanes difference = (value - target) & m_mask[half];
+      squares += pairProducts(difference, difference);
+      sums += pairProducts(difference, EacLanes{} + std::int16_t(1));
+      if (half == 0 &&
+          kPruneDenominator * std::int64_t(laneTotal(squares)) >= kPruneNumerator * m_bestError)
+        return kEacNoCandidate;
+    }
+    shift = std::int32_t(laneTotal(sums));
+    return std::int64_t(laneTotal(squares));
+  }
+
+  void consider(int table, int multiplier, int base, std::int64_t error) {
     if (error < m_bestError) {
       m_bestError = error;
       m_bestBase = base;
@@ -328,26 +427,31 @@ class EacSearch {
   }
 
   bool m_elevenBit;
-  float m_unit;  // value units per base step and per multiplier
-  float m_target[16], m_weight[16];
-  float m_low = std::numeric_limits<float>::max(), m_high = std::numeric_limits<float>::lowest();
-  float m_validCount = 1.0f;
-  float m_bestError = std::numeric_limits<float>::max();
+  int m_fixed;     // fixed-point units per code unit
+  int m_maxValue;  // the largest value, in fixed point
+  // Texels 0-7 and 8-15 (row-major), in fixed point; the mask lanes are -1 for texels in the map.
+  EacLanes m_target[2], m_mask[2];
+  float m_low = 0.0f, m_high = 0.0f;  // the valid targets' range, in the code's units
+  int m_validCount = 1;
+  std::int64_t m_bestError = kEacNoCandidate;
   int m_bestBase = 0, m_bestMultiplier = 1, m_bestTable = 0;
 };
 
 void encodeEacChannel(const float values[16], int validMask, bool elevenBit,
                       CompressionQuality quality, std::uint8_t out[8]) {
   EacSearch search(values, validMask, elevenBit);
-  // How far the wider search reaches around the ideal multiplier and the centred base.
-  const int multiplierReach = quality == CompressionQuality::Fast     ? 0
-                              : quality == CompressionQuality::Normal ? 1
-                                                                      : 2;
+  // How far the wider search reaches above the range's multiplier and around the centred base.
+  const int multipliersAbove = quality == CompressionQuality::Fast     ? 0
+                               : quality == CompressionQuality::Normal ? 1
+                                                                       : 2;
   const int baseReach = quality == CompressionQuality::Best ? 3 : 1;
+  // Least-squares steps from the window's best base. More than one step (best): on 2048^2
+  // normal maps +0.004 and +0.007 dB for no measurable time.
+  const int refinements = quality == CompressionQuality::Best ? 4 : 1;
   // Every table (narrowing to the best few tables after a first pass lost 2% of normal-map
   // angle accuracy for 25% of speed, measured with tools/bench-compress). Stops once exact.
   for (int table = 0; table < 16 && !search.exact(); ++table)
-    search.searchTable(table, multiplierReach, baseReach);
+    search.searchTable(table, multipliersAbove, baseReach, refinements);
   writeBigEndian(search.word(), out);
 }
 
