@@ -44,6 +44,7 @@ class ParameterSlider;
 
 namespace relief::ui::inline tasks {
 class BackgroundTask;
+class CliProcess;
 class CompressionRunner;
 class GeneratorRunner;
 }  // namespace relief::ui::tasks

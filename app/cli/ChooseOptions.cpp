@@ -30,8 +30,8 @@ CliOptions chooseGoalOptions() {
        {}},
       {option::kProgressLines,
        {},
-       QStringLiteral("With --preset: progress as 'progress 0.42' lines on standard error (for "
-                      "a GUI or a build log)."),
+       QStringLiteral("With --preset (or compare --rendered --slot): progress as "
+                      "'progress 0.42' lines on standard error (for a GUI or a build log)."),
        {}},
   };
 }

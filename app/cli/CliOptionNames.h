@@ -61,6 +61,7 @@ inline const QString kSeams = QStringLiteral("seams");
 inline const QString kSet = QStringLiteral("set");
 inline const QString kShading = QStringLiteral("shading");
 inline const QString kSize = QStringLiteral("size");
+inline const QString kSlot = QStringLiteral("slot");
 inline const QString kStats = QStringLiteral("stats");
 inline const QString kStrict = QStringLiteral("strict");
 inline const QString kSwizzle = QStringLiteral("swizzle");

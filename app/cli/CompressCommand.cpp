@@ -432,7 +432,8 @@ int runCompare(const QStringList& arguments) {
       "and rate when CANDIDATE is a DDS or KTX2 file. relief-cli compare --rendered PRESET "
       "[--json] instead renders the preset's material with its maps as they are and as its "
       "compression choices make them, and compares the pictures (see render "
-      "--compression-error)."));
+      "--compression-error); relief-cli compare --rendered PRESET --slot SLOT FILE.ktx2 "
+      "[FILE.dds ...] measures each compressed file in that map slot alone, one row a file."));
   parser.addPositionalArgument(QStringLiteral("reference"), QStringLiteral("The original."));
   parser.addPositionalArgument(QStringLiteral("candidate"),
                                QStringLiteral("An image or a .dds/.ktx2 file."));

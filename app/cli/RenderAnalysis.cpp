@@ -5,15 +5,18 @@
 
 #include "core/compression/CompressionJob.h"
 #include "core/exporters/EnginePreview.h"
+#include "renderer/CompressionChooser.h"
 #include "renderer/CostTable.h"
 #include "renderer/EngineGrid.h"
 #include "renderer/OffscreenRenderer.h"
 #include "renderer/RenderedError.h"
 
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QStringList>
 
 #include <cmath>
+#include <cstdio>
 
 namespace relief::cli {
 
@@ -41,6 +44,25 @@ core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscree
     printOut(QString::fromStdString(renderer::describeEngineGrid(grid)));
   return std::move(grid.picture);
 }
+
+namespace {
+
+QJsonArray viewRows(const std::vector<renderer::RenderedErrorRow>& rows) {
+  QJsonArray views;
+  for (const renderer::RenderedErrorRow& row : rows) {
+    views.append(QJsonObject{
+        {QStringLiteral("view"), QString::fromStdString(row.view)},
+        // JSON has no infinity: identical pictures have a null PSNR.
+        {QStringLiteral("psnr"), std::isinf(row.psnr) ? QJsonValue() : QJsonValue(row.psnr)},
+        {QStringLiteral("flip"), row.flipMean},
+        {QStringLiteral("uvShiftTexels"),
+         QJsonObject{{QStringLiteral("mean"), row.uvShiftMeanTexels},
+                     {QStringLiteral("p95"), row.uvShiftP95Texels}}}});
+  }
+  return views;
+}
+
+}  // namespace
 
 int printCompressionError(renderer::OffscreenRenderer& offscreen, const core::Material& material,
                           const std::array<core::MapCompression, core::kMapSlotCount>& compression,
@@ -92,21 +114,111 @@ int printCompressionError(renderer::OffscreenRenderer& offscreen, const core::Ma
              QString::fromStdString(renderer::describeRenderedError(rows.value())));
     return kExitOk;
   }
-  QJsonArray views;
-  for (const renderer::RenderedErrorRow& row : rows.value()) {
-    views.append(QJsonObject{
-        {QStringLiteral("view"), QString::fromStdString(row.view)},
-        // JSON has no infinity: identical pictures have a null PSNR.
-        {QStringLiteral("psnr"), std::isinf(row.psnr) ? QJsonValue() : QJsonValue(row.psnr)},
-        {QStringLiteral("flip"), row.flipMean},
-        {QStringLiteral("uvShiftTexels"),
-         QJsonObject{{QStringLiteral("mean"), row.uvShiftMeanTexels},
-                     {QStringLiteral("p95"), row.uvShiftP95Texels}}}});
-  }
   printJson(QJsonObject{{QStringLiteral("maps"), maps},
                         {QStringLiteral("width"), width},
                         {QStringLiteral("height"), height},
-                        {QStringLiteral("views"), views}});
+                        {QStringLiteral("views"), viewRows(rows.value())}});
+  return kExitOk;
+}
+
+int printCandidateErrors(renderer::OffscreenRenderer& offscreen, const core::Material& material,
+                         core::MapSlot slot, const QStringList& files,
+                         const renderer::FrameSettings& frame, int width, int height, bool json,
+                         bool progressLines) {
+  const QString slotName = qstr(core::mapSlotName(slot));
+  if (!material.hasMap(slot)) {
+    printError(QStringLiteral("--slot %1: the preset has no %1 map to compare with").arg(slotName));
+    return kExitUsage;
+  }
+  // Every file is read and its size checked before anything is rendered: a bad one fails at
+  // once. They are decoded one at a time below (decoded maps are 16 bytes a texel).
+  const core::Image& map = *material.image(slot);
+  std::vector<core::CompressedTexture> textures;
+  for (const QString& file : files) {
+    core::Result<core::CompressedTexture> texture = core::loadCompressedTexture(file.toStdString());
+    if (!texture) {
+      printError(QString::fromStdString(texture.error()));  // it names the file
+      return kExitFailure;
+    }
+    if (texture->levels.empty()) {
+      printError(QStringLiteral("%1: holds no texture level").arg(file));
+      return kExitFailure;
+    }
+    const core::CompressedLevel& top = texture->levels.front();
+    if (top.width != map.width() || top.height != map.height()) {
+      printError(QStringLiteral("%1: %2x%3 texels, but the preset's %4 map is %5x%6")
+                     .arg(file)
+                     .arg(top.width)
+                     .arg(top.height)
+                     .arg(slotName)
+                     .arg(map.width())
+                     .arg(map.height()));
+      return kExitFailure;
+    }
+    textures.push_back(std::move(texture).value());
+  }
+  const auto report = [&](std::size_t done) {
+    if (progressLines) {
+      std::fprintf(stderr, "progress %.2f\n", double(done) / double(files.size() + 1));
+      std::fflush(stderr);
+    }
+  };
+  core::Result<renderer::RenderedViews> original =
+      renderer::renderErrorViews(offscreen, material, frame, width, height);
+  if (!original) {
+    printError(QStringLiteral("compare --rendered: ") + QString::fromStdString(original.error()));
+    return kExitFailure;
+  }
+  report(1);
+  QJsonArray candidates;
+  QString text;
+  for (qsizetype i = 0; i < files.size(); ++i) {
+    const QString& file = files[i];
+    core::CompressedTexture& texture = textures[std::size_t(i)];
+    core::Result<core::Image> decoded = core::decodeAsMap(texture);
+    if (!decoded) {
+      printError(QStringLiteral("%1: %2").arg(file, QString::fromStdString(decoded.error())));
+      return kExitFailure;
+    }
+    const QString format = qstr(core::textureFormatInfo(texture.format).name);
+    core::Material compressed = material;
+    compressed.setCompressedMap(slot,
+                                std::make_shared<const core::CompressedTexture>(std::move(texture)),
+                                std::make_shared<const core::Image>(std::move(decoded).value()));
+    core::Result<renderer::RenderedViews> views =
+        renderer::renderErrorViews(offscreen, compressed, frame, width, height);
+    if (!views) {
+      printError(QStringLiteral("%1: %2").arg(file, QString::fromStdString(views.error())));
+      return kExitFailure;
+    }
+    views->heightTexels = original->heightTexels;
+    const std::vector<renderer::RenderedErrorRow> rows =
+        renderer::compareRenderedViews(original.value(), views.value());
+    const double flip = renderer::meanFlip(rows), psnr = renderer::meanPsnr(rows);
+    candidates.append(
+        QJsonObject{{QStringLiteral("file"), file},
+                    {QStringLiteral("format"), format},
+                    {QStringLiteral("flip"), flip},
+                    {QStringLiteral("psnr"), std::isinf(psnr) ? QJsonValue() : QJsonValue(psnr)},
+                    {QStringLiteral("views"), viewRows(rows)}});
+    text += QStringLiteral("%1 (%2): FLIP %3, PSNR %4\n")
+                .arg(QFileInfo(file).fileName(), format)
+                .arg(flip, 0, 'f', 4)
+                .arg(std::isinf(psnr) ? QStringLiteral("identical")
+                                      : QStringLiteral("%1 dB").arg(psnr, 0, 'f', 2));
+    report(std::size_t(i) + 2);
+  }
+  if (!json) {
+    printOut(QStringLiteral("the %1 map alone compressed, mean of the close, grazing and far "
+                            "views:\n")
+                 .arg(slotName) +
+             text);
+    return kExitOk;
+  }
+  printJson(QJsonObject{{QStringLiteral("slot"), slotName},
+                        {QStringLiteral("width"), width},
+                        {QStringLiteral("height"), height},
+                        {QStringLiteral("candidates"), candidates}});
   return kExitOk;
 }
 

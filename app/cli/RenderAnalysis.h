@@ -9,6 +9,7 @@
 #include "renderer/FrameSettings.h"
 
 #include <QJsonObject>
+#include <QStringList>
 
 #include <array>
 
@@ -30,6 +31,16 @@ core::Result<core::Image> renderEngineGrid(renderer::OffscreenRenderer& offscree
 int printCompressionError(renderer::OffscreenRenderer& offscreen, const core::Material& material,
                           const std::array<core::MapCompression, core::kMapSlotCount>& compression,
                           const renderer::FrameSettings& frame, int width, int height, bool json);
+
+// Renders `material` as it is and with each of `files` (DDS or KTX2, with the mip chain each
+// holds) in place of its `slot` map alone, from each of renderer/RenderedError.h's views, and
+// prints one row a file: the mean FLIP and PSNR over the views (text, or one JSON object with
+// the views too); "progress F" lines on standard error with `progressLines`. The exit code: a
+// file that cannot be read or decoded is named and fails the command.
+int printCandidateErrors(renderer::OffscreenRenderer& offscreen, const core::Material& material,
+                         core::MapSlot slot, const QStringList& files,
+                         const renderer::FrameSettings& frame, int width, int height, bool json,
+                         bool progressLines);
 
 // Measures and prints the cost table (text, or one JSON object); the exit code.
 int printCostTable(renderer::OffscreenRenderer& offscreen, const renderer::FrameSettings& frame,

@@ -157,6 +157,14 @@ CliOptions renderOptions() {
                       "FLIP, parallax UV shift in texels). relief-cli compare --rendered PRESET "
                       "is the same."),
        {}});
+  options.push_back(
+      {option::kSlot,
+       QStringLiteral("slot"),
+       QStringLiteral("With --compression-error: instead of the preset's choices, measure each "
+                      "DDS or KTX2 file given after the preset in this map slot (color, normal, "
+                      "height, ...) alone, with the mip chain the file holds: one row a file, "
+                      "the mean FLIP and PSNR of the three views."),
+       {}});
   options.push_back({option::kMaxError, QStringLiteral("texels"),
                      QStringLiteral("The cost table's error bound: the mean UV error the "
                                     "cheapest technique must stay within."),
@@ -199,9 +207,12 @@ CliOptions renderOptions() {
 }
 
 struct RenderRequest {
-  bool engineGrid = false;              // --engine grid
-  bool costTable = false;               // --cost-table
-  bool compressionError = false;        // --compression-error (compare --rendered)
+  bool engineGrid = false;                     // --engine grid
+  bool costTable = false;                      // --cost-table
+  bool compressionError = false;               // --compression-error (compare --rendered)
+  std::optional<core::MapSlot> candidateSlot;  // --slot: compare these files in that slot
+  QStringList candidateFiles;
+  bool progressLines = false;           // --progress-lines
   std::optional<ChooseRequest> choose;  // --choose-compression (compress --preset)
   double maxError = 0.25;               // --max-error
   core::Material material;
@@ -530,14 +541,29 @@ core::Result<QJsonObject> measureCost(renderer::OffscreenRenderer& offscreen,
 // Fills `request` from the command line; returns an exit code on failure.
 std::optional<int> buildRequest(const QCommandLineParser& parser, RenderRequest& request) {
   const QStringList positional = parser.positionalArguments();
-  if (positional.size() > 1) {
-    printError(QStringLiteral("render takes at most one preset (see --help)"));
-    return kExitUsage;
-  }
   request.json = parser.isSet(option::kJson);
   request.stats = parser.isSet(option::kStats);
   request.costTable = parser.isSet(option::kCostTable);
   request.compressionError = parser.isSet(option::kCompressionError);
+  request.progressLines = parser.isSet(option::kProgressLines);
+  if (parser.isSet(option::kSlot)) {
+    const QString name = parser.value(option::kSlot);
+    request.candidateSlot = core::findMapSlot(name.toStdString());
+    if (!request.candidateSlot) {
+      printError(QStringLiteral("--slot: unknown map slot '%1'").arg(name));
+      return kExitUsage;
+    }
+    if (!request.compressionError || positional.size() < 2) {
+      printError(QStringLiteral("--slot compares files in one slot: compare --rendered PRESET "
+                                "--slot %1 FILE.ktx2 [FILE.dds ...]")
+                     .arg(name));
+      return kExitUsage;
+    }
+    request.candidateFiles = positional.mid(1);
+  } else if (positional.size() > 1) {
+    printError(QStringLiteral("render takes at most one preset (see --help)"));
+    return kExitUsage;
+  }
   if (parser.isSet(option::kChooseCompression)) {
     if (positional.isEmpty()) {
       printError(
@@ -646,6 +672,11 @@ int renderRequest(renderer::OffscreenRenderer& offscreen, const RenderRequest& r
     ChooseRequest choose = *request.choose;
     choose.chooser.presetChoices = request.compression;
     return runChooseCompression(offscreen, request.material, request.frame, choose, request.json);
+  }
+  if (request.candidateSlot) {
+    return printCandidateErrors(offscreen, request.material, *request.candidateSlot,
+                                request.candidateFiles, request.frame, request.width,
+                                request.height, request.json, request.progressLines);
   }
   if (request.compressionError) {
     return printCompressionError(offscreen, request.material, request.compression, request.frame,

@@ -567,6 +567,75 @@ TEST(Cli, CompareRenderedMeasuresTheMaterialAsDrawn) {
   EXPECT_NE(noPreset.err.find("give the preset"), std::string::npos) << noPreset.err;
 }
 
+// compare --rendered --slot: each compressed file measured in one slot alone, one row a file. A
+// file compressed as the preset's choice would compress it (ASTC 4x4, fast, with mipmaps) gives
+// the same views as that choice measured by compare --rendered (the same blocks, frames and
+// chains: the two routes agree); a harder format (8x8) never scores better. A file that cannot be
+// read, one of another size, an unknown slot or a slot with no files: named, non-zero.
+TEST(Cli, CompareRenderedSlotMeasuresEachFileAlone) {
+  const std::string folder = scratchFolder();
+  const std::string preset = cobblestonesWithColourCompression(folder, "");
+  const std::string colour = sourcePath("samples/cobblestones/cobblestones_color.png");
+  for (const char* format : {"astc4x4", "astc8x8"}) {
+    CliRun run = runCli({"compress", "--in", q(colour), "--format", format, "--quality", "fast",
+                         "--mips", "--quiet", "--out", q(folder + "/" + format + ".ktx2")});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+  }
+  CliRun slot =
+      runCli({"compare", "--rendered", q(preset), "--slot", "color", q(folder + "/astc4x4.ktx2"),
+              q(folder + "/astc8x8.ktx2"), "--size", "96x72", "--json", "--progress-lines"});
+  ASSERT_EQ(slot.exitCode, 0) << slot.err;
+  EXPECT_NE(slot.err.find("progress 1.00"), std::string::npos) << slot.err;
+  const QJsonArray rows = QJsonDocument::fromJson(QByteArray::fromStdString(slot.out))
+                              .object()
+                              .value(QStringLiteral("candidates"))
+                              .toArray();
+  ASSERT_EQ(rows.size(), 2);
+  EXPECT_EQ(rows[0]["format"].toString(), QStringLiteral("astc4x4"));
+  CliRun choice =
+      runCli({"compare", "--rendered", q(cobblestonesWithColourCompression(folder, "astc4x4")),
+              "--size", "96x72", "--json"});
+  ASSERT_EQ(choice.exitCode, 0) << choice.err;
+  const QJsonArray chosenViews = QJsonDocument::fromJson(QByteArray::fromStdString(choice.out))
+                                     .object()
+                                     .value(QStringLiteral("views"))
+                                     .toArray();
+  const QJsonArray fine = rows[0]["views"].toArray(), coarse = rows[1]["views"].toArray();
+  ASSERT_EQ(chosenViews.size(), 3);
+  ASSERT_EQ(fine.size(), 3);
+  for (int i = 0; i < 3; ++i) {
+    const std::string name = fine[i]["view"].toString().toStdString();
+    EXPECT_GT(fine[i]["flip"].toDouble(), 0.0) << name;
+    EXPECT_DOUBLE_EQ(fine[i]["flip"].toDouble(), chosenViews[i]["flip"].toDouble()) << name;
+    EXPECT_DOUBLE_EQ(fine[i]["psnr"].toDouble(), chosenViews[i]["psnr"].toDouble()) << name;
+    EXPECT_GE(coarse[i]["flip"].toDouble(), fine[i]["flip"].toDouble()) << name;
+  }
+  EXPECT_GE(rows[1]["flip"].toDouble(), rows[0]["flip"].toDouble());
+
+  CliRun missing = runCli({"compare", "--rendered", q(preset), "--slot", "color",
+                           q(folder + "/astc4x4.ktx2"), q(folder + "/absent.ktx2")});
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("absent.ktx2"), std::string::npos) << missing.err;
+  core::Image small(64, 64, 1, core::ColorSpace::Linear);
+  std::fill(small.data(), small.data() + small.valueCount(), 0.5f);
+  ASSERT_TRUE(core::saveImage(small, folder + "/small.png", core::SampleFormat::UInt8).ok());
+  ASSERT_EQ(runCli({"compress", "--in", q(folder + "/small.png"), "--format", "bc4", "--quiet",
+                    "--out", q(folder + "/small.ktx2")})
+                .exitCode,
+            0);
+  CliRun otherSize =
+      runCli({"compare", "--rendered", q(preset), "--slot", "height", q(folder + "/small.ktx2")});
+  EXPECT_EQ(otherSize.exitCode, 1);
+  EXPECT_NE(otherSize.err.find("small.ktx2: 64x64 texels"), std::string::npos) << otherSize.err;
+  CliRun unknown =
+      runCli({"compare", "--rendered", q(preset), "--slot", "colour", q(folder + "/astc4x4.ktx2")});
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.err.find("colour"), std::string::npos) << unknown.err;
+  CliRun noFiles = runCli({"compare", "--rendered", q(preset), "--slot", "color"});
+  EXPECT_EQ(noFiles.exitCode, 2);
+  EXPECT_NE(noFiles.err.find("FILE.ktx2"), std::string::npos) << noFiles.err;
+}
+
 // --shading pbr with --format exr writes the linear radiance, unclamped: the highlight of a
 // smooth metal on a sphere is far brighter than 1 (GGX's peak at roughness 0.2 is about 200 per
 // steradian). A shading that does not exist is refused with the choices.

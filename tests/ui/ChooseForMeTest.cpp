@@ -28,6 +28,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 namespace relief::test {
 namespace {
 
@@ -113,6 +115,45 @@ TEST_F(ChooseForMeTest, TheChoiceReachesTheDocumentAndTheWipe) {
   document()->undoStack()->undo();
   for (const auto& [slot, choice] : dialog()->chosen())
     EXPECT_FALSE(document()->compression(slot).has_value());
+}
+
+// Compare All Formats renders the material with each row's map in place of the original (in
+// relief-cli, as Choose for Me) and fills the Rendered FLIP column: every row a value, more for
+// ASTC 8x8 (2 bits a texel) than for 4x4 (8 bits), while the editor keeps turning.
+TEST_F(ChooseForMeTest, CompareAllRendersEachFormatInTheMaterial) {
+  ui::CompareAllDialog* all = panel()->compareAllDialog();
+  all->setCliPath(QStringLiteral(RELIEF_CLI_PATH));
+  all->setViewSize(QSize(64, 48));
+  panel()->openCompareAll();  // the colour map, the first with a map
+  int ticks = 0;
+  QTimer heartbeat;
+  QObject::connect(&heartbeat, &QTimer::timeout, [&ticks] { ++ticks; });
+  heartbeat.start(10);
+  for (int waited = 0; (all->runner()->isRunning() || all->rendering()) && waited < 240000;
+       waited += 50)
+    QTest::qWait(50);
+  ASSERT_FALSE(all->rendering());
+  EXPECT_GT(ticks, 20);
+  int renderedColumn = -1;
+  for (int c = 0; c < all->table()->columnCount(); ++c) {
+    if (all->table()->horizontalHeaderItem(c)->text() == QStringLiteral("Rendered FLIP"))
+      renderedColumn = c;
+  }
+  ASSERT_GE(renderedColumn, 0);
+  ASSERT_GT(all->table()->rowCount(), 5);
+  std::map<int, double> flips;  // by format
+  for (int row = 0; row < all->table()->rowCount(); ++row) {
+    const QTableWidgetItem* item = all->table()->item(row, renderedColumn);
+    ASSERT_NE(item, nullptr) << all->table()->item(row, 0)->text().toStdString();
+    const double flip = item->data(Qt::UserRole).toDouble();
+    EXPECT_GT(flip, 0.0) << row;
+    EXPECT_LT(flip, 0.2) << row;
+    flips[all->table()->item(row, 0)->data(Qt::UserRole).toInt()] = flip;
+  }
+  ASSERT_TRUE(flips.count(int(core::TextureFormat::Astc8x8)) &&
+              flips.count(int(core::TextureFormat::Astc4x4)));
+  EXPECT_GT(flips[int(core::TextureFormat::Astc8x8)], flips[int(core::TextureFormat::Astc4x4)]);
+  all->close();
 }
 
 TEST_F(ChooseForMeTest, ABudgetTooSmallIsSaidAndChangesNothing) {

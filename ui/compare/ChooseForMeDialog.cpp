@@ -6,16 +6,14 @@
 #include "ui/QtText.h"
 #include "ui/document/MaterialDocument.h"
 #include "ui/document/ViewDocument.h"
+#include "ui/tasks/CliProcess.h"
 
 #include <QComboBox>
-#include <QCoreApplication>
-#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -48,8 +46,8 @@ ChooseForMeDialog::ChooseForMeDialog(MaterialDocument* document, ViewDocument* v
     : QDialog(parent),
       m_document(document),
       m_view(view),
-      m_cliPath(
-          QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("relief-cli"))) {
+      m_cliPath(CliProcess::defaultProgram()),
+      m_process(new CliProcess(this)) {
   setWindowTitle(tr("Choose for Me"));
   m_goal = new QComboBox(this);
   m_goal->setObjectName(QStringLiteral("chooseGoal"));
@@ -110,14 +108,25 @@ ChooseForMeDialog::ChooseForMeDialog(MaterialDocument* document, ViewDocument* v
   connect(m_goal, &QComboBox::currentIndexChanged, this, &ChooseForMeDialog::goalChanged);
   connect(m_choose, &QPushButton::clicked, this, &ChooseForMeDialog::choose);
   connect(m_apply, &QPushButton::clicked, this, &ChooseForMeDialog::apply);
+  connect(m_process, &CliProcess::progress, this,
+          [this](double fraction) { m_progress->setValue(int(std::lround(fraction * 100.0))); });
+  connect(m_process, &CliProcess::finished, this, &ChooseForMeDialog::finished);
+  connect(m_process, &CliProcess::cancelled, this, [this] {
+    setRunning(false);
+    m_progress->setValue(0);
+    m_summary->setText(tr("Cancelled."));
+  });
+  connect(m_process, &CliProcess::failedToStart, this, [this](const QString& message) {
+    setRunning(false);
+    m_summary->setText(message);
+  });
   goalChanged();
 }
 
-ChooseForMeDialog::~ChooseForMeDialog() {
-  if (running()) {
-    m_process->kill();
-    m_process->waitForFinished(2000);
-  }
+ChooseForMeDialog::~ChooseForMeDialog() = default;  // the CliProcess kills a running child
+
+bool ChooseForMeDialog::running() const {
+  return m_process->running();
 }
 
 void ChooseForMeDialog::goalChanged() {
@@ -157,13 +166,11 @@ void ChooseForMeDialog::setRunning(bool running) {
 
 void ChooseForMeDialog::choose() {
   if (running()) {
-    m_process->kill();  // finished() reports the cancel
+    m_process->cancel();  // `cancelled` follows
     return;
   }
   m_chosen.clear();
   m_table->setRowCount(0);
-  m_errors.clear();
-  m_pending.clear();
   m_progress->setValue(0);
   // The material as a preset in a folder of its own; maps made in the editor are written there.
   m_folder = std::make_unique<QTemporaryDir>();
@@ -197,46 +204,13 @@ void ChooseForMeDialog::choose() {
     arguments << QStringLiteral("--size")
               << QStringLiteral("%1x%2").arg(m_viewSize.width()).arg(m_viewSize.height());
   }
-  if (!m_process) {
-    m_process = new QProcess(this);
-    connect(m_process, &QProcess::readyReadStandardError, this, &ChooseForMeDialog::readProgress);
-    connect(m_process, &QProcess::finished, this, &ChooseForMeDialog::finished);
-    connect(m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
-      if (error != QProcess::FailedToStart)
-        return;
-      setRunning(false);
-      m_summary->setText(tr("Cannot start %1: %2").arg(m_cliPath, m_process->errorString()));
-    });
-  }
   m_summary->setText(tr("Compressing and rendering each candidate…"));
   setRunning(true);
   m_process->start(m_cliPath, arguments);
 }
 
-void ChooseForMeDialog::readProgress() {
-  m_pending += m_process->readAllStandardError();
-  // Whole lines: "progress 0.42" moves the bar, anything else is kept for the message.
-  qsizetype end;
-  while ((end = m_pending.indexOf('\n')) >= 0) {
-    const QByteArray line = m_pending.left(end);
-    m_pending.remove(0, end + 1);
-    if (line.startsWith("progress "))
-      m_progress->setValue(int(std::lround(line.mid(9).toDouble() * 100.0)));
-    else
-      m_errors += line + '\n';
-  }
-}
-
-void ChooseForMeDialog::finished(int exitCode, QProcess::ExitStatus status) {
-  readProgress();
+void ChooseForMeDialog::finished(int exitCode, const QJsonObject& report, const QString& errors) {
   setRunning(false);
-  const QString errors = QString::fromUtf8(m_errors + m_pending).trimmed();
-  const QJsonObject report = QJsonDocument::fromJson(m_process->readAllStandardOutput()).object();
-  if (status == QProcess::CrashExit) {
-    m_progress->setValue(0);
-    m_summary->setText(tr("Cancelled."));
-    return;
-  }
   if (!report.isEmpty())
     showReport(report);
   if (exitCode != 0) {
@@ -321,8 +295,7 @@ void ChooseForMeDialog::apply() {
 }
 
 void ChooseForMeDialog::reject() {
-  if (running())
-    m_process->kill();
+  m_process->cancel();
   QDialog::reject();
 }
 

@@ -15,7 +15,6 @@
 
 #include <QDialog>
 #include <QJsonObject>
-#include <QProcess>
 #include <QSize>
 
 #include <map>
@@ -51,7 +50,7 @@ class ChooseForMeDialog : public QDialog {
   QPushButton* applyButton() const { return m_apply; }
   QTableWidget* table() const { return m_table; }
   QLabel* summary() const { return m_summary; }
-  bool running() const { return m_process && m_process->state() != QProcess::NotRunning; }
+  bool running() const;
   // The last finished run's choice: a format and an RDO trade (0: none) per map; empty when
   // nothing was chosen.
   struct Choice {
@@ -74,8 +73,7 @@ class ChooseForMeDialog : public QDialog {
  private:
   enum class Goal { Budget, Flip, Psnr };
   void goalChanged();
-  void finished(int exitCode, QProcess::ExitStatus status);
-  void readProgress();
+  void finished(int exitCode, const QJsonObject& report, const QString& errors);
   void showReport(const QJsonObject& report);
   void setRunning(bool running);
 
@@ -91,10 +89,8 @@ class ChooseForMeDialog : public QDialog {
   QProgressBar* m_progress;
   QLabel* m_summary;
   QTableWidget* m_table;
-  QProcess* m_process = nullptr;
+  CliProcess* m_process;
   std::unique_ptr<QTemporaryDir> m_folder;
-  QByteArray m_errors;   // the run's standard error, less its progress lines
-  QByteArray m_pending;  // the start of a line not yet complete
   std::map<core::MapSlot, Choice> m_chosen;
 };
 

@@ -2,18 +2,22 @@
 #include "ui/compare/CompareAllDialog.h"
 
 #include "core/compression/BlockRdo.h"
+#include "core/compression/TextureFile.h"
 #include "ui/QtText.h"
+#include "ui/tasks/CliProcess.h"
 
 #include <QChart>
 #include <QChartView>
 #include <QCursor>
 #include <QDialogButtonBox>
 #include <QHeaderView>
+#include <QJsonArray>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScatterSeries>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QToolTip>
 #include <QVBoxLayout>
 #include <QValueAxis>
@@ -30,8 +34,10 @@ namespace {
 constexpr double kChartBits = 9.0;
 // The trades Compare All tries for each format with RDO, under Zstandard (BlockRdo.h).
 constexpr float kRdoLambdas[] = {8.0f, 32.0f};
-// Where a row's format item keeps its RDO lambda (Qt::UserRole holds the format).
+// Where a row's format item keeps its RDO lambda (Qt::UserRole holds the format) and the index
+// of its outcome (the rows sort; the outcomes keep their order).
 constexpr int kRdoRole = Qt::UserRole + 1;
+constexpr int kOutcomeRole = Qt::UserRole + 2;
 constexpr double kLabelWidth = 0.22;
 constexpr double kLabelHeight = 0.07;
 
@@ -43,6 +49,7 @@ enum Column {
   QualityColumn,
   SsimColumn,
   FlipColumn,
+  RenderedColumn,
   DetailColumn,
   SecondsColumn,
   ColumnCount
@@ -66,14 +73,19 @@ QTableWidgetItem* sortableNumber(double value, const QString& text) {
 
 }  // namespace
 
-CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
+CompareAllDialog::CompareAllDialog(QWidget* parent)
+    : QDialog(parent), m_cliPath(CliProcess::defaultProgram()), m_process(new CliProcess(this)) {
   setWindowTitle(tr("Compare All Formats"));
-  resize(860, 720);
+  resize(940, 720);
   m_runner = new CompressionRunner(this);
   m_table = new QTableWidget(0, ColumnCount, this);
   m_table->setHorizontalHeaderLabels({tr("Format"), tr("Bits/texel"), tr("On disk"), tr("vs RGBA8"),
-                                      tr("Quality"), tr("SSIM"), tr("FLIP"), tr("Detail"),
-                                      tr("Seconds")});
+                                      tr("Quality"), tr("SSIM"), tr("FLIP"), tr("Rendered FLIP"),
+                                      tr("Detail"), tr("Seconds")});
+  m_table->horizontalHeaderItem(RenderedColumn)
+      ->setToolTip(tr("The material rendered with this map alone compressed (with the mip chain it "
+                      "ships with, as counted on disk) against the original: FLIP, the perceptual "
+                      "difference, mean of a close, a grazing and a far view. Lower is better."));
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setSelectionMode(QAbstractItemView::SingleSelection);
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -112,6 +124,7 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
 
   connect(buttons, &QDialogButtonBox::rejected, this, &CompareAllDialog::reject);
   connect(m_cancel, &QPushButton::clicked, m_runner, &CompressionRunner::cancel);
+  connect(m_cancel, &QPushButton::clicked, m_process, &CliProcess::cancel);
   connect(m_table, &QTableWidget::itemSelectionChanged, this,
           [this] { m_use->setEnabled(selectedFormat().has_value()); });
   connect(m_table, &QTableWidget::cellDoubleClicked, m_use, &QPushButton::click);
@@ -135,6 +148,27 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
     m_cancel->setEnabled(false);
     m_status->setText(
         tr("%1 formats compared. Select one and press Use Format.").arg(m_outcomes.size()));
+    startRendering();
+  });
+  connect(m_process, &CliProcess::progress, this, [this](double fraction) {
+    m_progress->setValue(int(std::lround(fraction * 1000.0)));
+    // The CLI reports the original's render, then one step a format.
+    const int rendered = int(std::lround(fraction * double(m_outcomes.size() + 1))) - 1;
+    m_status->setText(tr("%1 formats compared. Rendering the material with each: %2 of %3…")
+                          .arg(m_outcomes.size())
+                          .arg(std::max(rendered, 0))
+                          .arg(m_outcomes.size()));
+  });
+  connect(m_process, &CliProcess::finished, this, &CompareAllDialog::showRendered);
+  connect(m_process, &CliProcess::cancelled, this, [this] {
+    m_cancel->setEnabled(false);
+    m_status->setText(
+        tr("%1 formats compared; the rendered error was cancelled.").arg(m_outcomes.size()));
+  });
+  connect(m_process, &CliProcess::failedToStart, this, [this](const QString& message) {
+    m_cancel->setEnabled(false);
+    m_status->setText(
+        tr("%1 formats compared; no rendered error: %2").arg(m_outcomes.size()).arg(message));
   });
   connect(m_runner, &CompressionRunner::cancelled, this, [this] {
     m_cancel->setEnabled(false);
@@ -146,9 +180,16 @@ CompareAllDialog::CompareAllDialog(QWidget* parent) : QDialog(parent) {
   });
 }
 
+CompareAllDialog::~CompareAllDialog() = default;  // the CliProcess kills a running child
+
+bool CompareAllDialog::rendering() const {
+  return m_process->running();
+}
+
 void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
                              core::CompressionQuality quality, bool mipmaps, int zstdLevel,
                              double heightScale) {
+  m_process->cancel();
   m_slot = slot;
   m_texels = double(map->width()) * double(map->height());
   m_outcomes.clear();
@@ -236,6 +277,7 @@ void CompareAllDialog::addRow(const core::CompressionOutcome& outcome) {
                      : rowName(outcome.job.settings));
   name->setData(Qt::UserRole, int(format));
   name->setData(kRdoRole, double(outcome.job.settings.rdoLambda));
+  name->setData(kOutcomeRole, int(m_outcomes.size()) - 1);
   if (materialChoice) {
     QFont font = name->font();
     font.setBold(true);
@@ -370,8 +412,78 @@ void CompareAllDialog::updateChart() {
   }
 }
 
+void CompareAllDialog::startRendering() {
+  if (!m_preset || m_outcomes.empty())
+    return;
+  // The material as a preset in a folder of its own (maps made in the editor are written
+  // there), and each row's texture as a KTX2 file beside it, in the outcomes' order.
+  m_folder = std::make_unique<QTemporaryDir>();
+  const QString presetPath = m_folder->filePath(QStringLiteral("material.relief"));
+  core::Result<core::SavedPreset> saved =
+      m_folder->isValid() ? core::savePreset(*m_preset, presetPath.toStdString())
+                          : core::makeError(m_folder->errorString().toStdString());
+  if (!saved) {
+    m_status->setText(tr("No rendered error: cannot hand the material over: %1")
+                          .arg(QString::fromStdString(saved.error())));
+    return;
+  }
+  QStringList arguments = {QStringLiteral("compare"), QStringLiteral("--rendered"), presetPath,
+                           QStringLiteral("--slot"), toQString(core::mapSlotName(m_slot))};
+  for (std::size_t i = 0; i < m_outcomes.size(); ++i) {
+    const QString file = m_folder->filePath(QStringLiteral("format%1.ktx2").arg(i));
+    if (core::Status written =
+            core::saveCompressedTexture(*m_outcomes[i].texture, file.toStdString());
+        !written) {
+      m_status->setText(tr("No rendered error: %1").arg(QString::fromStdString(written.error())));
+      return;
+    }
+    arguments << file;
+  }
+  arguments << QStringLiteral("--json") << QStringLiteral("--progress-lines");
+  if (!m_viewSize.isEmpty()) {
+    arguments << QStringLiteral("--size")
+              << QStringLiteral("%1x%2").arg(m_viewSize.width()).arg(m_viewSize.height());
+  }
+  m_progress->setValue(0);
+  m_cancel->setEnabled(true);
+  m_status->setText(
+      tr("%1 formats compared. Rendering the material with each…").arg(m_outcomes.size()));
+  m_process->start(m_cliPath, arguments);
+}
+
+void CompareAllDialog::showRendered(int exitCode, const QJsonObject& report,
+                                    const QString& errors) {
+  m_cancel->setEnabled(false);
+  m_progress->setValue(1000);
+  const QJsonArray candidates = report.value(QStringLiteral("candidates")).toArray();
+  if (exitCode != 0 || candidates.size() != qsizetype(m_outcomes.size())) {
+    QString message = errors;
+    message.replace(QStringLiteral("relief-cli: "), QString());
+    m_status->setText(tr("%1 formats compared; no rendered error: %2")
+                          .arg(m_outcomes.size())
+                          .arg(message.isEmpty() ? tr("exit code %1").arg(exitCode) : message));
+    return;
+  }
+  m_table->setSortingEnabled(false);
+  for (int row = 0; row < m_table->rowCount(); ++row) {
+    const int outcome = m_table->item(row, FormatColumn)->data(kOutcomeRole).toInt();
+    const double flip = candidates[outcome][QStringLiteral("flip")].toDouble();
+    const QJsonValue psnr = candidates[outcome][QStringLiteral("psnr")];
+    auto* item = sortableNumber(flip, QString::number(flip, 'f', 4));
+    item->setToolTip(
+        tr("Rendered PSNR %1")
+            .arg(psnr.isNull() ? tr("identical") : tr("%1 dB").arg(psnr.toDouble(), 0, 'f', 2)));
+    m_table->setItem(row, RenderedColumn, item);
+  }
+  m_table->setSortingEnabled(true);
+  m_status->setText(tr("%1 formats compared, each also rendered in the material (Rendered "
+                       "FLIP). Select one and press Use Format.")
+                        .arg(m_outcomes.size()));
+}
+
 void CompareAllDialog::reject() {
   m_runner->cancel();
+  m_process->cancel();
   QDialog::reject();
 }
 

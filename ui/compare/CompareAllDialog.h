@@ -3,13 +3,20 @@
 // sortable table and plots quality against bits per pixel (QtCharts), one labelled point per
 // format; under Zstandard the formats with RDO get rows at two trades (lambda 8 and 32) and the
 // chart's axis is the size on disk, so each draws its size-quality curve. Choosing a row and
-// "Use Format" hands the format (and its trade) back to the Compress panel.
+// "Use Format" hands the format (and its trade) back to the Compress panel. Given the material
+// (setMaterial), it then renders the material with each row's map in place of the original
+// (`relief-cli compare --rendered --slot` in a child process, as Choose for Me runs) and fills
+// the Rendered FLIP column: the error where the artist looks, not in the texels.
 #pragma once
 
 #include "core/compression/Compressor.h"
+#include "core/preset/MaterialPreset.h"
+#include "ui/Forward.h"
 #include "ui/tasks/CompressionRunner.h"
 
 #include <QDialog>
+#include <QJsonObject>
+#include <QSize>
 
 #include <memory>
 #include <optional>
@@ -19,6 +26,7 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
+class QTemporaryDir;
 
 class QChartView;
 
@@ -29,6 +37,15 @@ class CompareAllDialog : public QDialog {
 
  public:
   explicit CompareAllDialog(QWidget* parent = nullptr);
+  ~CompareAllDialog() override;
+
+  // The material the map belongs to (its maps, parameters and view), for the rendered error;
+  // without one (std::nullopt) the Rendered FLIP column stays empty. Set before start().
+  void setMaterial(std::optional<core::Preset> preset) { m_preset = std::move(preset); }
+  // The CLI run and the size of its three views (default: the CLI's 320x240).
+  void setCliPath(const QString& path) { m_cliPath = path; }
+  void setViewSize(const QSize& size) { m_viewSize = size; }
+  bool rendering() const;  // the rendered error is being measured
 
   // Starts the comparison of `map` (in `slot`) at `quality`; the size on disk is that of a
   // KTX2 file with a full mip chain or level 0 alone (`mipmaps`, as the Compress panel's choice,
@@ -60,6 +77,8 @@ class CompareAllDialog : public QDialog {
  private:
   void addRow(const core::CompressionOutcome& outcome);
   void updateChart();
+  void startRendering();  // the rendered error of every outcome, after the compression
+  void showRendered(int exitCode, const QJsonObject& report, const QString& errors);
 
   CompressionRunner* m_runner;
   QTableWidget* m_table;
@@ -76,6 +95,11 @@ class CompareAllDialog : public QDialog {
   std::optional<core::TextureFormat> m_materialChoice;
   float m_materialChoiceRdo = 0.0f;
   int m_zstdLevel = 0;
+  std::optional<core::Preset> m_preset;
+  QString m_cliPath;
+  QSize m_viewSize;
+  CliProcess* m_process;
+  std::unique_ptr<QTemporaryDir> m_folder;  // the hand-over preset and the compressed files
   static QString rowName(const core::CompressionSettings& settings, bool shortName = false);
 };
 

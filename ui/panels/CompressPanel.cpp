@@ -711,6 +711,8 @@ void CompressPanel::openCompareAll() {
     materialChoiceRdo = m_chooseForMeDialog->chosen().at(*slot).rdoLambda;
   }
   dialog->setMaterialChoice(materialChoice, materialChoiceRdo);
+  // The rendered error is judged from the viewport's camera and light, as Choose for Me's.
+  dialog->setMaterial(m_document->toPreset(m_viewDocument->viewState()));
   dialog->start(*slot, m_document->material().map(*slot).image,
                 core::CompressionQuality(row.quality->currentData().toInt()),
                 m_mipmaps->isChecked(), m_zstd->value(),
