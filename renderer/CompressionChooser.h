@@ -5,8 +5,10 @@
 // measured by their file size and by the rendered error each makes alone (RenderedError.h's
 // views) and ranked by core::rankPicks; the few combinations that matter are then rendered with
 // all their maps compressed together, and the measured error decides: for a budget the least
-// FLIP of the first kBudgetRenders ranked, for a target the fewest bytes that meet it. `relief-cli
-// compress --preset P --budget 6MB` and the Compress panel's Choose for Me run it.
+// FLIP of the first kBudgetRenders ranked, for a target the fewest bytes that meet it. For a
+// budget the candidates are screened at `fast`; the chosen ones are compressed again at the
+// quality asked for and measured again, so the files and numbers of the choice are those shipped.
+// `relief-cli compress --preset P --budget 6MB` and the Compress panel's Choose for Me run it.
 #pragma once
 
 #include "core/base/Result.h"
@@ -30,7 +32,7 @@ class OffscreenRenderer;
 struct ChooserRequest {
   core::ChooserGoal goal;
   core::ChooserPlatform platform = core::ChooserPlatform::Desktop;
-  core::CompressionQuality quality = core::CompressionQuality::Normal;
+  core::CompressionQuality quality = core::CompressionQuality::Normal;  // of the files shipped
   int zstdLevel = 19;  // the supercompression the sizes are counted after (1..22)
   // The preset's own choices: their mip filter, roughness fold and alpha cutoff are kept (only
   // the format is chosen); slots without one get a full box-filtered chain.

@@ -106,10 +106,38 @@ TEST(ChooseForMe, TheBudgetHoldsAndTheFilesAreTheChoice) {
         << file;
     EXPECT_EQ(texture->levels.size(), 7u) << file << ": a full chain of a 64x64 map";
     EXPECT_TRUE(texture->zstdInFile) << file;
+    // Candidates are screened at fast; the chosen one ships at the quality asked for (the
+    // default, normal), and its row gives that file's bytes.
     int chosen = 0;
-    for (const QJsonValue& candidate : map["candidates"].toArray())
-      chosen += candidate["chosen"].toBool() ? 1 : 0;
+    for (const QJsonValue& candidate : map["candidates"].toArray()) {
+      const bool picked = candidate["chosen"].toBool();
+      chosen += picked ? 1 : 0;
+      EXPECT_EQ(candidate["quality"].toString(),
+                picked ? QStringLiteral("normal") : QStringLiteral("fast"))
+          << file;
+      if (picked) {
+        EXPECT_EQ(candidate["bytes"].toDouble(), double(fs::file_size(file))) << file;
+      }
+    }
     EXPECT_EQ(chosen, 1) << file;
+    // The very blocks `compress` writes at normal quality with the same chain and RDO trade.
+    const QString slot = map["slot"].toString();
+    const std::string source =
+        fs::path(preset).parent_path() / ("cobblestones_" + slot.toStdString() + ".png");
+    const std::string alone = root + "/alone_" + slot.toStdString() + ".ktx2";
+    QStringList arguments = {"compress", "--in",    q(source), "--format", map["format"].toString(),
+                             "--mips",   "--quiet", "--out",   q(alone)};
+    if (slot != QStringLiteral("color"))
+      arguments << ("--" + slot);
+    if (map["rdo"].toDouble() > 0.0)
+      arguments << "--rdo" << QString::number(map["rdo"].toDouble()) << "--zstd"
+                << "19";
+    ASSERT_EQ(runCli(arguments).exitCode, 0) << source;
+    core::Result<core::CompressedTexture> reference = core::loadCompressedTexture(alone);
+    ASSERT_TRUE(reference.ok()) << reference.error();
+    ASSERT_EQ(reference->levels.size(), texture->levels.size()) << file;
+    for (std::size_t level = 0; level < texture->levels.size(); ++level)
+      EXPECT_EQ(reference->levels[level].data, texture->levels[level].data) << file << level;
   }
   EXPECT_EQ(onDisk, total);
   EXPECT_TRUE(fs::exists(middleDir + "/choice.json"));
