@@ -189,7 +189,7 @@ bool CompareAllDialog::rendering() const {
 void CompareAllDialog::start(core::MapSlot slot, std::shared_ptr<const core::Image> map,
                              core::CompressionQuality quality, bool mipmaps, int zstdLevel,
                              double heightScale) {
-  m_process->cancel();
+  m_process->abandon();  // the last map's rendering, if still going: this run replaces it
   m_slot = slot;
   m_texels = double(map->width()) * double(map->height());
   m_outcomes.clear();

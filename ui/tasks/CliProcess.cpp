@@ -21,25 +21,25 @@ void CliProcess::connectProcess() {
 }
 
 CliProcess::~CliProcess() {
-  if (running()) {
-    m_process->disconnect(this);
-    m_process->kill();
-    m_process->waitForFinished(2000);
-  }
+  abandon();
 }
 
 QString CliProcess::defaultProgram() {
   return QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("relief-cli"));
 }
 
+void CliProcess::abandon() {
+  if (!running())
+    return;
+  // The old run's end must not be taken for a new one's.
+  m_process->disconnect(this);
+  m_process->kill();
+  m_process->waitForFinished(2000);
+  connectProcess();
+}
+
 void CliProcess::start(const QString& program, const QStringList& arguments) {
-  if (running()) {
-    // The old run's end must not be taken for the new one's.
-    m_process->disconnect(this);
-    m_process->kill();
-    m_process->waitForFinished(2000);
-    connectProcess();
-  }
+  abandon();
   m_program = program;
   m_errors.clear();
   m_pending.clear();

@@ -26,7 +26,8 @@ class CliProcess : public QObject {
 
   // Starts `program arguments`; cancels a run still going (its `finished` is not emitted).
   void start(const QString& program, const QStringList& arguments);
-  void cancel();  // kills the child; `cancelled` follows
+  void cancel();   // kills the child; `cancelled` follows
+  void abandon();  // kills the child and waits for it; nothing follows (a new run replaces it)
   bool running() const { return m_process->state() != QProcess::NotRunning; }
 
  Q_SIGNALS:
